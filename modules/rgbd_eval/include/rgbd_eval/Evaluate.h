@@ -1,0 +1,45 @@
+#pragma once
+/** \file Evaluate.h
+ * Trajectory accuracy as the TUM RGB-D benchmark and the paper (section IV-A) measure it. */
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "rgbd_io/Trajectory.h"
+
+namespace hrgbd {
+
+/** Parameters of evaluateTrajectory(). */
+struct EvalParams {
+  double max_time_difference = 0.02;  //!< [s] estimate/ground-truth association limit
+  double rpe_delta = 1.0;             //!< [s] RPE interval (shortened to the span if longer)
+};
+
+/** Accuracy figures. Positions in metres, rates per second. */
+struct EvalResult {
+  std::size_t pairs = 0;          //!< associated (estimate, ground truth) poses
+  double ate_rmse = 0;            //!< [m] ATE RMSE after rigid Horn alignment (TUM tool)
+  double ate_mean_unaligned = 0;  //!< [m] paper eq. (10), both relative to their first pose
+  double rpe_trans = 0;           //!< [m/s] RPE translation RMSE over rpe_delta_used
+  double rpe_rot = 0;             //!< [deg/s] RPE rotation RMSE over rpe_delta_used
+  double rpe_delta_used = 0;      //!< [s] interval actually used for RPE
+  std::size_t rpe_pairs = 0;      //!< intervals that entered the RPE
+  // Per associated pose, for plots: time, ground truth, aligned estimate, aligned error.
+  std::vector<double> t;
+  Trajectory ground_truth, estimate_aligned;
+  std::vector<double> error_aligned;  //!< [m]
+};
+
+/** Associates `estimate` with `ground_truth` by time stamp and computes the figures.
+ * Throws std::runtime_error if fewer than 3 poses associate (the alignment needs 3). */
+EvalResult evaluateTrajectory(const Trajectory& ground_truth, const Trajectory& estimate,
+                              const EvalParams& params = {});
+
+/** One JSON object with keys ate_rmse, ate_mean_unaligned, rpe_trans, rpe_rot, pairs,
+ * rpe_delta, rpe_pairs. */
+std::string toJson(const EvalResult& r);
+
+/** Human-readable summary, one figure per line. */
+std::string toText(const EvalResult& r);
+
+}  // namespace hrgbd

@@ -1,0 +1,129 @@
+#include "rgbd_eval/Evaluate.h"
+
+#include <mrpt/math/TPoint3D.h>
+#include <mrpt/poses/CPose3DQuat.h>
+#include <mrpt/tfest/se3.h>
+
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "rgbd_io/TimeAssociation.h"
+
+namespace hrgbd {
+namespace {
+
+double rotationAngleDeg(const mrpt::poses::CPose3D& p) {
+  const auto R = p.getRotationMatrix();
+  const double c = std::clamp((R(0, 0) + R(1, 1) + R(2, 2) - 1.0) / 2.0, -1.0, 1.0);
+  return mrpt::RAD2DEG(std::acos(c));
+}
+
+double rms(const std::vector<double>& v) {
+  double s = 0;
+  for (double x : v) s += x * x;
+  return v.empty() ? 0.0 : std::sqrt(s / v.size());
+}
+
+// Relative pose errors over `delta` seconds (TUM evaluate_rpe.py, per second of interval).
+void computeRpe(const std::vector<double>& t, const Trajectory& gt, const Trajectory& est,
+                double delta, EvalResult& r) {
+  const double span = t.back() - t.front();
+  r.rpe_delta_used = std::min(delta, span);
+  std::vector<double> et, er;
+  std::size_t j = 0;
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    j = std::max(j, i + 1);
+    while (j < t.size() && t[j] - t[i] < r.rpe_delta_used - 1e-9) ++j;
+    if (j >= t.size()) break;
+    const double dt = t[j] - t[i];
+    if (dt > 2 * r.rpe_delta_used) continue;    // a gap in the data, not an interval
+    const auto dq = gt[j].pose - gt[i].pose;    // Q_i^-1 Q_j
+    const auto dp = est[j].pose - est[i].pose;  // P_i^-1 P_j
+    const auto e = dp - dq;                     // (Q_i^-1 Q_j)^-1 (P_i^-1 P_j)
+    et.push_back(e.translation().norm() / dt);
+    er.push_back(rotationAngleDeg(e) / dt);
+  }
+  r.rpe_pairs = et.size();
+  r.rpe_trans = rms(et);
+  r.rpe_rot = rms(er);
+}
+
+}  // namespace
+
+EvalResult evaluateTrajectory(const Trajectory& ground_truth, const Trajectory& estimate,
+                              const EvalParams& params) {
+  std::vector<double> tg, te;
+  for (const auto& p : ground_truth) tg.push_back(p.t);
+  for (const auto& p : estimate) te.push_back(p.t);
+  const auto pairs = associateByTime(te, tg, params.max_time_difference);
+  if (pairs.size() < 3)
+    throw std::runtime_error("only " + std::to_string(pairs.size()) +
+                             " estimated poses lie within " +
+                             std::to_string(params.max_time_difference) +
+                             " s of a ground-truth pose; at least 3 are needed");
+  EvalResult r;
+  r.pairs = pairs.size();
+  Trajectory gt, est;
+  for (const auto& [ie, ig] : pairs) {
+    r.t.push_back(estimate[ie].t);
+    gt.push_back(ground_truth[ig]);
+    est.push_back(estimate[ie]);
+  }
+
+  // (1) ATE RMSE after Horn's closed-form alignment of the positions (mrpt::tfest).
+  std::vector<mrpt::math::TPoint3D> pg, pe;
+  for (std::size_t i = 0; i < gt.size(); ++i) {
+    pg.push_back(gt[i].pose.translation());
+    pe.push_back(est[i].pose.translation());
+  }
+  mrpt::poses::CPose3DQuat align;
+  double scale = 1;
+  if (!mrpt::tfest::se3_l2(pg, pe, align, scale, true))
+    throw std::runtime_error("Horn alignment failed (degenerate trajectory)");
+  const mrpt::poses::CPose3D S(align);
+  for (std::size_t i = 0; i < gt.size(); ++i) {
+    TimedPose a{est[i].t, S + est[i].pose};
+    r.error_aligned.push_back((a.pose.translation() - gt[i].pose.translation()).norm());
+    r.estimate_aligned.push_back(a);
+  }
+  r.ate_rmse = rms(r.error_aligned);
+
+  // (2) Paper eq. (9)-(10) with S = identity: both trajectories relative to their first pose.
+  double sum = 0;
+  for (std::size_t i = 0; i < gt.size(); ++i) {
+    const auto Q = gt[i].pose - gt[0].pose, P = est[i].pose - est[0].pose;
+    sum += (P.translation() - Q.translation()).norm();
+  }
+  r.ate_mean_unaligned = sum / gt.size();
+
+  // (3) RPE.
+  computeRpe(r.t, gt, est, params.rpe_delta, r);
+  r.ground_truth = gt;
+  return r;
+}
+
+std::string toJson(const EvalResult& r) {
+  char buf[512];
+  std::snprintf(buf, sizeof(buf),
+                "{\"ate_rmse\": %.6f, \"ate_mean_unaligned\": %.6f, \"rpe_trans\": %.6f, "
+                "\"rpe_rot\": %.6f, \"pairs\": %zu, \"rpe_delta\": %.3f, \"rpe_pairs\": %zu}",
+                r.ate_rmse, r.ate_mean_unaligned, r.rpe_trans, r.rpe_rot, r.pairs, r.rpe_delta_used,
+                r.rpe_pairs);
+  return buf;
+}
+
+std::string toText(const EvalResult& r) {
+  char buf[768];
+  std::snprintf(buf, sizeof(buf),
+                "pairs                 %zu\n"
+                "ATE RMSE (aligned)    %.4f m\n"
+                "ATE mean (unaligned)  %.4f m   (paper eq. 10, relative to the first pose)\n"
+                "RPE translation       %.4f m/s (RMSE over %.2f s, %zu intervals)\n"
+                "RPE rotation          %.4f deg/s\n",
+                r.pairs, r.ate_rmse, r.ate_mean_unaligned, r.rpe_trans, r.rpe_delta_used,
+                r.rpe_pairs, r.rpe_rot);
+  return buf;
+}
+
+}  // namespace hrgbd

@@ -1,0 +1,29 @@
+#pragma once
+/** \file Config.h
+ * Strict INI loading helpers: MRPT's CLoadableOptions ignore unknown keys; ours reject them. */
+#include <mrpt/config/CConfigFileBase.h>
+
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace hrgbd {
+
+/** Thrown for any configuration problem; the message names the section and key. */
+struct ConfigError : public std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+/** Throws ConfigError if `section` holds a key not in `known`. */
+void rejectUnknownKeys(const mrpt::config::CConfigFileBase& cfg, const std::string& section,
+                       const std::vector<std::string>& known);
+
+/** Throws ConfigError "[section] key = value: <why>" unless `ok`. */
+void requireValid(bool ok, const std::string& section, const std::string& key, double value,
+                  const std::string& why);
+
+/** Loads an INI file, throwing ConfigError if it is missing or unreadable. */
+std::unique_ptr<mrpt::config::CConfigFileBase> loadIniFile(const std::string& path);
+
+}  // namespace hrgbd

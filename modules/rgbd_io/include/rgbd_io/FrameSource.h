@@ -1,0 +1,37 @@
+#pragma once
+/** \file FrameSource.h
+ * The one seam between data (rawlog, TUM folder, live sensor, simulator) and the odometry. */
+#include <mrpt/obs/CObservation3DRangeScan.h>
+
+#include <cstddef>
+#include <string>
+
+#include "rgbd_io/Trajectory.h"
+
+namespace hrgbd {
+
+/** Counters of what a source has read so far. */
+struct SourceStats {
+  std::size_t frames = 0;           //!< 3D range-scan frames returned
+  std::size_t skipped_objects = 0;  //!< objects of other types passed over (counted, not lost)
+};
+
+/** A stream of RGB-D frames.
+ * next() returns the next frame, or nullptr at the end of the data, and only then. Any error
+ * (unreadable file, corrupt or truncated data, missing image) throws std::runtime_error whose
+ * message names the file and the entry. */
+class FrameSource {
+ public:
+  virtual ~FrameSource() = default;
+  virtual mrpt::obs::CObservation3DRangeScan::Ptr next() = 0;
+  /** Ground truth of the colour camera (optical frame, TUM convention); empty if none. */
+  virtual Trajectory groundTruth() const { return {}; }
+  /** One line saying what this source reads, for logs. */
+  virtual std::string describe() const = 0;
+  const SourceStats& stats() const { return m_stats; }
+
+ protected:
+  SourceStats m_stats;
+};
+
+}  // namespace hrgbd

@@ -1,0 +1,40 @@
+#pragma once
+/** \file RawlogSource.h
+ * An MRPT rawlog (gzip or plain; observations-only or SensoryFrame format) as a FrameSource. */
+#include <mrpt/io/CFileGZInputStream.h>
+#include <mrpt/obs/CSensoryFrame.h>
+#include <mrpt/serialization/CArchive.h>
+
+#include <deque>
+#include <memory>
+
+#include "rgbd_io/FrameSource.h"
+
+namespace hrgbd {
+
+/** Ground truth file expected beside a rawlog: "<dir>/<stem>_groundtruth.txt" (TUM format). */
+std::string groundTruthPathFor(const std::string& rawlog_path);
+
+/** Reads CObservation3DRangeScan frames from a rawlog, one at a time. Objects of other types
+ * (actions, other observations) are skipped and counted in stats().skipped_objects. Externally
+ * stored images are
+ * loaded on next() ("<stem>_Images/" or what MRPT detects). Clean end of file -> nullptr; a
+ * truncated or corrupt file -> exception naming the file and entry. */
+class RawlogSource : public FrameSource {
+ public:
+  explicit RawlogSource(const std::string& path);
+  mrpt::obs::CObservation3DRangeScan::Ptr next() override;
+  Trajectory groundTruth() const override { return m_ground_truth; }
+  std::string describe() const override;
+
+ private:
+  std::string m_path;
+  mrpt::io::CFileGZInputStream m_file;
+  std::unique_ptr<mrpt::serialization::CArchive> m_archive;
+  std::deque<mrpt::obs::CObservation3DRangeScan::Ptr> m_pending;  // from a SensoryFrame
+  std::size_t m_entry = 0;
+  std::string m_images_dir;
+  Trajectory m_ground_truth;
+};
+
+}  // namespace hrgbd

@@ -1,0 +1,35 @@
+#pragma once
+/** \file RgbdFrame.h
+ * Building and reading CObservation3DRangeScan frames as colour + depth images. */
+#include <mrpt/img/TCamera.h>
+#include <mrpt/obs/CObservation3DRangeScan.h>
+
+#include <opencv2/core.hpp>
+#include <string>
+
+namespace hrgbd {
+
+/** Makes a registered RGB-D observation (depth already registered to colour, as in TUM).
+ * \param bgr         8-bit colour image (CV_8UC3, BGR) or empty for none.
+ * \param depth_raw   16-bit depth image (CV_16UC1), 0 = no depth.
+ * \param depth_unit  [m] per unit of `depth_raw` (1/5000 for TUM). Stored as `rangeUnits`, so the
+ *                    raw values keep full precision.
+ * \param cam         intrinsics of both cameras (they coincide).
+ * \param t           [s] UNIX time stamp.
+ * Throws std::invalid_argument for wrong types, sizes that differ from each other or from `cam`. */
+mrpt::obs::CObservation3DRangeScan::Ptr makeRgbdObservation(const cv::Mat& bgr,
+                                                            const cv::Mat& depth_raw,
+                                                            double depth_unit,
+                                                            const mrpt::img::TCamera& cam, double t,
+                                                            const std::string& label = "RGBD");
+
+/** Depth of a frame in metres (CV_32FC1, 0 where unknown). Requires `range_is_depth`. */
+cv::Mat depthMetres(const mrpt::obs::CObservation3DRangeScan& obs);
+
+/** Colour image as CV_8UC3 BGR (grey images are expanded); empty if the frame has none. */
+cv::Mat colourBgr(const mrpt::obs::CObservation3DRangeScan& obs);
+
+/** Time stamp [s, UNIX time] of an observation. */
+double timestampSeconds(const mrpt::obs::CObservation& obs);
+
+}  // namespace hrgbd

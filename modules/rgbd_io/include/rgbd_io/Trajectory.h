@@ -1,0 +1,49 @@
+#pragma once
+/** \file Trajectory.h
+ * Camera trajectories in the TUM RGB-D format and the frame conventions around them.
+ *
+ * Conventions:
+ * - TUM poses (`timestamp tx ty tz qx qy qz qw`) are the pose of the colour camera's
+ *   *optical* frame (z forward, x right, y down) in a world frame; so are all poses in
+ *   `Trajectory`.
+ * - MRPT's CObservation3DRangeScan sensor frame is x forward, y left, z up. A sensor pose in
+ *   MRPT's convention (e.g. `CObservation3DRangeScan::sensorPose`) relates to the optical pose by
+ *   `mrpt_pose = optical_pose (+) kOpticalToMrpt` (see opticalToMrpt()).
+ */
+#include <mrpt/poses/CPose3D.h>
+
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+namespace hrgbd {
+
+/** One pose with its time stamp [s, UNIX time as in TUM files]. */
+struct TimedPose {
+  double t = 0;
+  mrpt::poses::CPose3D pose;
+};
+using Trajectory = std::vector<TimedPose>;
+
+/** Reads a TUM trajectory file. Lines starting with '#' and blank lines are skipped. Throws
+ * std::runtime_error naming the file and line for a malformed line, a non-finite value or a
+ * zero quaternion; quaternions are normalised. Entries are returned in file order. */
+Trajectory loadTumTrajectory(const std::string& path);
+
+/** Writes one TUM line (`t tx ty tz qx qy qz qw`, 9 decimals for t, 6 for the rest). */
+void writeTumLine(std::ostream& out, const TimedPose& p);
+
+/** Writes a whole trajectory with a '#' header comment; throws if the file cannot be written. */
+void saveTumTrajectory(const std::string& path, const Trajectory& traj);
+
+/** Pose of MRPT's sensor frame (x fwd, y left, z up) relative to the optical frame (z fwd,
+ * x right, y down). Equals CPose3D(0,0,0, -90deg, 0, -90deg)^-1 ... see opticalToMrpt(). */
+mrpt::poses::CPose3D mrptFrameInOptical();
+
+/** Optical-frame pose (TUM) -> the same camera's pose in MRPT's sensor convention. */
+mrpt::poses::CPose3D opticalToMrpt(const mrpt::poses::CPose3D& optical_pose);
+
+/** MRPT sensor-convention pose -> optical-frame pose (TUM); inverse of opticalToMrpt(). */
+mrpt::poses::CPose3D mrptToOptical(const mrpt::poses::CPose3D& mrpt_pose);
+
+}  // namespace hrgbd

@@ -1,0 +1,35 @@
+#pragma once
+/** \file TumLists.h
+ * TUM RGB-D list files (`rgb.txt`, `depth.txt`: "timestamp filename") and their association. */
+#include <string>
+#include <vector>
+
+namespace hrgbd {
+
+/** One entry of a TUM list file. */
+struct TumListEntry {
+  double t = 0;      //!< [s]
+  std::string file;  //!< path relative to the dataset folder
+  int line = 0;      //!< line number in the list file, for messages
+};
+
+/** Parses a TUM list. Comments ('#') and blank lines are skipped. Throws std::runtime_error
+ * naming the file and line for a malformed line, a non-finite time, or a time stamp that is not
+ * strictly greater than the previous one (duplicated or out-of-order stamps). */
+std::vector<TumListEntry> parseTumList(const std::string& path);
+
+/** Same, from text already in memory; `name` is used in messages. */
+std::vector<TumListEntry> parseTumListText(const std::string& text, const std::string& name);
+
+/** A colour/depth pair matched by time. */
+struct TumPair {
+  TumListEntry rgb, depth;
+};
+
+/** Associates colour and depth entries as TUM's associate.py does: candidate pairs closer than
+ * `max_dt` [s], taken greedily by increasing time difference, each entry used once; the result
+ * is sorted by colour time (see associateByTime()). */
+std::vector<TumPair> associateTumLists(const std::vector<TumListEntry>& rgb,
+                                       const std::vector<TumListEntry>& depth, double max_dt);
+
+}  // namespace hrgbd

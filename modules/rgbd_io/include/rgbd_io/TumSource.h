@@ -1,0 +1,50 @@
+#pragma once
+/** \file TumSource.h
+ * A TUM RGB-D dataset folder (rgb.txt, depth.txt, optional groundtruth.txt) as a FrameSource. */
+#include <mrpt/config/CLoadableOptions.h>
+#include <mrpt/img/TCamera.h>
+
+#include <vector>
+
+#include "rgbd_io/FrameSource.h"
+#include "rgbd_io/TumLists.h"
+
+namespace hrgbd {
+
+/** Parameters of TumSource. INI section [TumSource]. */
+struct TumSourceParams : public mrpt::config::CLoadableOptions {
+  double max_time_difference = 0.02;  //!< [s] colour/depth pairs further apart are not associated
+  double depth_factor = 5000.0;       //!< [units per metre] depth PNG value / factor = metres
+  /** auto (from the folder name, else ros_default), fr1, fr2, fr3, ros_default, or explicit
+   * (use fx, fy, cx, cy below). */
+  std::string intrinsics = "auto";
+  double fx = 525.0, fy = 525.0;  //!< [px] focal lengths, only with intrinsics = explicit
+  double cx = 319.5, cy = 239.5;  //!< [px] principal point, only with intrinsics = explicit
+
+  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
+  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+};
+
+class TumSource : public FrameSource {
+ public:
+  /** Reads and associates the lists now; throws naming the file if anything is wrong. */
+  TumSource(const std::string& folder, const TumSourceParams& params = {});
+  mrpt::obs::CObservation3DRangeScan::Ptr next() override;
+  Trajectory groundTruth() const override { return m_ground_truth; }
+  std::string describe() const override;
+
+  const mrpt::img::TCamera& camera() const { return m_camera; }
+  std::size_t size() const { return m_pairs.size(); }
+  std::size_t unmatchedColour() const { return m_unmatched_rgb; }
+
+ private:
+  std::string m_folder;
+  TumSourceParams m_params;
+  mrpt::img::TCamera m_camera;
+  std::string m_camera_name;
+  std::vector<TumPair> m_pairs;
+  std::size_t m_next = 0, m_unmatched_rgb = 0;
+  Trajectory m_ground_truth;
+};
+
+}  // namespace hrgbd

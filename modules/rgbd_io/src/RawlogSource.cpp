@@ -1,0 +1,86 @@
+#include "rgbd_io/RawlogSource.h"
+
+#include <mrpt/img/CImage.h>
+#include <mrpt/obs/CRawlog.h>
+#include <mrpt/system/filesystem.h>
+
+#include <filesystem>
+#include <stdexcept>
+
+namespace hrgbd {
+
+std::string groundTruthPathFor(const std::string& rawlog_path) {
+  return std::filesystem::path(rawlog_path).replace_extension().string() + "_groundtruth.txt";
+}
+
+RawlogSource::RawlogSource(const std::string& path) : m_path(path) {
+  if (!mrpt::system::fileExists(path))
+    throw std::runtime_error("rawlog '" + path + "' does not exist");
+  if (!m_file.open(path)) throw std::runtime_error("cannot open rawlog '" + path + "'");
+  m_archive =
+      std::make_unique<mrpt::serialization::CArchiveStreamBase<mrpt::io::CFileGZInputStream>>(
+          m_file);
+  // "<stem>_Images" first: MRPT 2.5's detectImagesDirectory() misses it for absolute paths.
+  const auto own = std::filesystem::path(path).replace_extension().string() + "_Images";
+  m_images_dir =
+      std::filesystem::is_directory(own) ? own : mrpt::obs::CRawlog::detectImagesDirectory(path);
+  const auto gt = groundTruthPathFor(path);
+  if (mrpt::system::fileExists(gt)) m_ground_truth = loadTumTrajectory(gt);
+}
+
+mrpt::obs::CObservation3DRangeScan::Ptr RawlogSource::next() {
+  using mrpt::obs::CObservation3DRangeScan;
+  while (m_pending.empty()) {
+    const auto start = m_file.getPosition();
+    mrpt::serialization::CSerializable::Ptr obj;
+    try {
+      obj = m_archive->ReadObject();
+    } catch (const mrpt::serialization::CExceptionEOF&) {
+      // A clean end leaves no byte of a partial object behind.
+      if (m_file.getPosition() == start) return nullptr;
+      throw std::runtime_error("rawlog '" + m_path + "' is truncated inside entry " +
+                               std::to_string(m_entry) + " (at byte " + std::to_string(start) +
+                               " of the uncompressed stream)");
+    } catch (const std::exception& e) {
+      throw std::runtime_error("rawlog '" + m_path + "' is corrupt at entry " +
+                               std::to_string(m_entry) + ": " + e.what());
+    }
+    ++m_entry;
+    if (auto obs = std::dynamic_pointer_cast<CObservation3DRangeScan>(obj)) {
+      m_pending.push_back(obs);
+    } else if (auto sf = std::dynamic_pointer_cast<mrpt::obs::CSensoryFrame>(obj)) {
+      for (const auto& o : *sf) {
+        if (auto o3d = std::dynamic_pointer_cast<CObservation3DRangeScan>(o))
+          m_pending.push_back(o3d);
+        else
+          ++m_stats.skipped_objects;
+      }
+    } else {
+      ++m_stats.skipped_objects;
+    }
+  }
+  auto obs = m_pending.front();
+  m_pending.pop_front();
+  if (obs->hasIntensityImage && obs->intensityImage.isExternallyStored()) {
+    mrpt::img::CImage::setImagesPathBase(m_images_dir);
+    const auto file = obs->intensityImage.getExternalStorageFileAbsolutePath();
+    if (!mrpt::system::fileExists(file))
+      throw std::runtime_error("rawlog '" + m_path + "' entry " + std::to_string(m_entry - 1) +
+                               ": external image '" + file + "' is missing");
+  }
+  try {
+    obs->load();
+  } catch (const std::exception& e) {
+    throw std::runtime_error("rawlog '" + m_path + "' entry " + std::to_string(m_entry - 1) +
+                             ": cannot load external data: " + e.what());
+  }
+  ++m_stats.frames;
+  return obs;
+}
+
+std::string RawlogSource::describe() const {
+  return "rawlog '" + m_path + "' (" + std::to_string(m_ground_truth.size()) +
+         " ground-truth poses)";
+}
+
+}  // namespace hrgbd

@@ -1,0 +1,69 @@
+#include "rgbd_io/Trajectory.h"
+
+#include <mrpt/math/CMatrixFixed.h>
+#include <mrpt/math/CQuaternion.h>
+
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+#include <stdexcept>
+
+namespace hrgbd {
+
+Trajectory loadTumTrajectory(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot open trajectory file '" + path + "'");
+  Trajectory traj;
+  std::string line;
+  for (int line_no = 1; std::getline(in, line); ++line_no) {
+    const auto first = line.find_first_not_of(" \t\r");
+    if (first == std::string::npos || line[first] == '#') continue;
+    std::istringstream ss(line);
+    double v[8];
+    for (double& x : v) ss >> x;
+    const auto where = "'" + path + "' line " + std::to_string(line_no);
+    if (ss.fail())
+      throw std::runtime_error(where + ": expected 8 numbers 't tx ty tz qx qy qz qw'");
+    for (double x : v)
+      if (!std::isfinite(x)) throw std::runtime_error(where + ": non-finite value");
+    const double qnorm = std::sqrt(v[4] * v[4] + v[5] * v[5] + v[6] * v[6] + v[7] * v[7]);
+    if (qnorm < 1e-9) throw std::runtime_error(where + ": zero quaternion");
+    mrpt::math::CQuaternionDouble q(v[7] / qnorm, v[4] / qnorm, v[5] / qnorm, v[6] / qnorm);
+    traj.push_back({v[0], mrpt::poses::CPose3D(q, v[1], v[2], v[3])});
+  }
+  return traj;
+}
+
+void writeTumLine(std::ostream& out, const TimedPose& p) {
+  mrpt::math::CQuaternionDouble q;
+  p.pose.getAsQuaternion(q);
+  out << std::fixed << std::setprecision(9) << p.t << std::setprecision(6) << " " << p.pose.x()
+      << " " << p.pose.y() << " " << p.pose.z() << " " << q.x() << " " << q.y() << " " << q.z()
+      << " " << q.r() << "\n";
+}
+
+void saveTumTrajectory(const std::string& path, const Trajectory& traj) {
+  std::ofstream out(path);
+  if (!out) throw std::runtime_error("cannot write trajectory file '" + path + "'");
+  out << "# timestamp tx ty tz qx qy qz qw (optical frame: z forward, x right, y down)\n";
+  for (const auto& p : traj) writeTumLine(out, p);
+  if (!out) throw std::runtime_error("error while writing '" + path + "'");
+}
+
+mrpt::poses::CPose3D mrptFrameInOptical() {
+  // Columns: MRPT x (forward) = optical +z, MRPT y (left) = optical -x, MRPT z (up) = optical -y.
+  const double rows[9] = {0, -1, 0, 0, 0, -1, 1, 0, 0};
+  const mrpt::math::CMatrixDouble33 R(rows);
+  return mrpt::poses::CPose3D::FromRotationAndTranslation(R, mrpt::math::TVector3D(0, 0, 0));
+}
+
+mrpt::poses::CPose3D opticalToMrpt(const mrpt::poses::CPose3D& optical_pose) {
+  return optical_pose + mrptFrameInOptical();
+}
+
+mrpt::poses::CPose3D mrptToOptical(const mrpt::poses::CPose3D& mrpt_pose) {
+  return mrpt_pose + (-mrptFrameInOptical());  // a (+) b^-1; note MRPT a - b = b^-1 (+) a
+}
+
+}  // namespace hrgbd

@@ -1,0 +1,55 @@
+#include "rgbd_io/TumLists.h"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "rgbd_io/TimeAssociation.h"
+
+namespace hrgbd {
+
+std::vector<TumListEntry> parseTumListText(const std::string& text, const std::string& name) {
+  std::vector<TumListEntry> out;
+  std::istringstream in(text);
+  std::string line;
+  for (int line_no = 1; std::getline(in, line); ++line_no) {
+    const auto first = line.find_first_not_of(" \t\r");
+    if (first == std::string::npos || line[first] == '#') continue;
+    std::istringstream ss(line);
+    TumListEntry e;
+    e.line = line_no;
+    const auto where = "'" + name + "' line " + std::to_string(line_no);
+    if (!(ss >> e.t >> e.file)) throw std::runtime_error(where + ": expected 'timestamp filename'");
+    if (!std::isfinite(e.t)) throw std::runtime_error(where + ": non-finite time stamp");
+    if (!out.empty() && !(e.t > out.back().t))
+      throw std::runtime_error(where + ": time stamp " + std::to_string(e.t) +
+                               " is not after the previous one (" + std::to_string(out.back().t) +
+                               "); TUM lists must be in strictly increasing time order");
+    out.push_back(e);
+  }
+  return out;
+}
+
+std::vector<TumListEntry> parseTumList(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot open TUM list '" + path + "'");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return parseTumListText(ss.str(), path);
+}
+
+std::vector<TumPair> associateTumLists(const std::vector<TumListEntry>& rgb,
+                                       const std::vector<TumListEntry>& depth, double max_dt) {
+  auto times = [](const std::vector<TumListEntry>& v) {
+    std::vector<double> t;
+    for (const auto& e : v) t.push_back(e.t);
+    return t;
+  };
+  std::vector<TumPair> pairs;
+  for (const auto& [i, j] : associateByTime(times(rgb), times(depth), max_dt))
+    pairs.push_back({rgb[i], depth[j]});
+  return pairs;
+}
+
+}  // namespace hrgbd

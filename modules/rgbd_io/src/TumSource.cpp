@@ -1,0 +1,99 @@
+#include "rgbd_io/TumSource.h"
+
+#include <mrpt/config/CConfigFileBase.h>
+#include <mrpt/system/filesystem.h>
+
+#include <algorithm>
+#include <opencv2/imgcodecs.hpp>
+#include <stdexcept>
+
+#include "rgbd_io/Config.h"
+#include "rgbd_io/Intrinsics.h"
+#include "rgbd_io/RgbdFrame.h"
+
+namespace hrgbd {
+
+void TumSourceParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
+                                         const std::string& s) {
+  rejectUnknownKeys(c, s,
+                    {"max_time_difference", "depth_factor", "intrinsics", "fx", "fy", "cx", "cy"});
+  MRPT_LOAD_CONFIG_VAR_CS(max_time_difference, double);
+  MRPT_LOAD_CONFIG_VAR_CS(depth_factor, double);
+  MRPT_LOAD_CONFIG_VAR_CS(intrinsics, string);
+  MRPT_LOAD_CONFIG_VAR_CS(fx, double);
+  MRPT_LOAD_CONFIG_VAR_CS(fy, double);
+  MRPT_LOAD_CONFIG_VAR_CS(cx, double);
+  MRPT_LOAD_CONFIG_VAR_CS(cy, double);
+  requireValid(max_time_difference > 0 && max_time_difference < 1, s, "max_time_difference",
+               max_time_difference, "must be in (0, 1) s");
+  requireValid(depth_factor > 0, s, "depth_factor", depth_factor, "must be > 0");
+  requireValid(fx > 0 && fy > 0, s, "fx", fx, "focal lengths must be > 0");
+  const std::vector<std::string> names{"auto", "fr1", "fr2", "fr3", "ros_default", "explicit"};
+  if (std::find(names.begin(), names.end(), intrinsics) == names.end())
+    throw ConfigError("[" + s + "] intrinsics = " + intrinsics +
+                      ": must be auto, fr1, fr2, fr3, ros_default or explicit");
+}
+
+void TumSourceParams::saveToConfigFile(mrpt::config::CConfigFileBase& c,
+                                       const std::string& s) const {
+  MRPT_SAVE_CONFIG_VAR_COMMENT(max_time_difference, "[s] max colour/depth time difference");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(depth_factor, "[units/m] depth PNG value / factor = metres");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(intrinsics, "auto|fr1|fr2|fr3|ros_default|explicit");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(fx, "[px] only with intrinsics = explicit");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(fy, "[px] only with intrinsics = explicit");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(cx, "[px] only with intrinsics = explicit");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(cy, "[px] only with intrinsics = explicit");
+}
+
+TumSource::TumSource(const std::string& folder, const TumSourceParams& params)
+    : m_folder(folder), m_params(params) {
+  if (!mrpt::system::directoryExists(folder))
+    throw std::runtime_error("TUM folder '" + folder + "' does not exist");
+  const auto rgb = parseTumList(folder + "/rgb.txt");
+  const auto depth = parseTumList(folder + "/depth.txt");
+  if (rgb.empty()) throw std::runtime_error("'" + folder + "/rgb.txt' lists no images");
+  m_pairs = associateTumLists(rgb, depth, params.max_time_difference);
+  m_unmatched_rgb = rgb.size() - m_pairs.size();
+  if (m_pairs.empty())
+    throw std::runtime_error("'" + folder + "': no colour/depth pair closer than " +
+                             std::to_string(params.max_time_difference) + " s");
+
+  m_camera_name = params.intrinsics;
+  if (m_camera_name == "auto") {
+    m_camera_name = guessTumPreset(mrpt::system::toAbsolutePath(folder));
+    if (m_camera_name.empty()) m_camera_name = "ros_default";
+  }
+  m_camera = m_camera_name == "explicit" ? pinholeCamera(params.fx, params.fy, params.cx, params.cy)
+                                         : intrinsicsPreset(m_camera_name);
+
+  const auto gt = folder + "/groundtruth.txt";
+  if (mrpt::system::fileExists(gt)) m_ground_truth = loadTumTrajectory(gt);
+}
+
+mrpt::obs::CObservation3DRangeScan::Ptr TumSource::next() {
+  if (m_next >= m_pairs.size()) return nullptr;
+  const auto& p = m_pairs[m_next++];
+  const auto rgb_path = m_folder + "/" + p.rgb.file;
+  const auto depth_path = m_folder + "/" + p.depth.file;
+  cv::Mat bgr = cv::imread(rgb_path, cv::IMREAD_COLOR);
+  if (bgr.empty()) throw std::runtime_error("cannot read colour image '" + rgb_path + "'");
+  cv::Mat depth = cv::imread(depth_path, cv::IMREAD_ANYDEPTH);
+  if (depth.empty()) throw std::runtime_error("cannot read depth image '" + depth_path + "'");
+  if (depth.type() != CV_16UC1)
+    throw std::runtime_error("depth image '" + depth_path + "' is not a 16-bit PNG");
+  if (bgr.size() != depth.size())
+    throw std::runtime_error("'" + rgb_path + "' and '" + depth_path + "' differ in size");
+  auto cam = m_camera;
+  if (depth.cols != static_cast<int>(cam.ncols) || depth.rows != static_cast<int>(cam.nrows))
+    cam.scaleToResolution(depth.cols, depth.rows);
+  ++m_stats.frames;
+  return makeRgbdObservation(bgr, depth, 1.0 / m_params.depth_factor, cam, p.rgb.t);
+}
+
+std::string TumSource::describe() const {
+  return "TUM folder '" + m_folder + "': " + std::to_string(m_pairs.size()) + " frames (" +
+         std::to_string(m_unmatched_rgb) + " colour images without depth), intrinsics " +
+         m_camera_name + ", " + std::to_string(m_ground_truth.size()) + " ground-truth poses";
+}
+
+}  // namespace hrgbd

@@ -1,0 +1,122 @@
+#include "rgbd_io/RawlogSource.h"
+
+#include <mrpt/io/CFileGZInputStream.h>
+#include <mrpt/obs/CObservationOdometry.h>
+#include <mrpt/obs/CSensoryFrame.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "TestData.h"
+#include "rgbd_io/Intrinsics.h"
+#include "rgbd_io/RawlogWriter.h"
+#include "rgbd_io/RgbdFrame.h"
+
+namespace {
+
+mrpt::obs::CObservation3DRangeScan::Ptr frame(double t, uint16_t value) {
+  cv::Mat depth(480, 640, CV_16UC1, cv::Scalar(value));
+  cv::Mat bgr(480, 640, CV_8UC3, cv::Scalar(value % 255, 50, 100));
+  return hrgbd::makeRgbdObservation(bgr, depth, 1.0 / 5000, hrgbd::intrinsicsPreset("fr1"), t);
+}
+
+// Writes: frame, odometry, frame, SensoryFrame{frame, odometry}, frame.
+void writeMixedRawlog(const std::string& path, hrgbd::ImageStorage images) {
+  hrgbd::RawlogWriter w(path, images);
+  w.write(*frame(1.0, 5000));
+  w.write(mrpt::obs::CObservationOdometry());
+  w.write(*frame(2.0, 6000));
+  mrpt::obs::CSensoryFrame sf;
+  sf.insert(frame(3.0, 7000));
+  sf.insert(mrpt::obs::CObservationOdometry::Create());
+  w.write(sf);
+  w.write(*frame(4.0, 8000));
+}
+
+std::vector<double> readAll(hrgbd::RawlogSource& src) {
+  std::vector<double> depths;
+  while (auto obs = src.next()) depths.push_back(hrgbd::depthMetres(*obs).at<float>(10, 10));
+  return depths;
+}
+
+std::string readBytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
+}  // namespace
+
+TEST(RawlogSource, MixedFormatsAreReadAndOtherTypesCounted) {
+  const auto dir = hrgbd::test::tempDir("rawlog_mixed");
+  for (auto images : {hrgbd::ImageStorage::Inline, hrgbd::ImageStorage::ExternalPng}) {
+    const auto path = dir + "/mixed.rawlog";
+    writeMixedRawlog(path, images);
+    hrgbd::RawlogSource src(path);
+    const auto d = readAll(src);
+    ASSERT_EQ(d.size(), 4u);
+    EXPECT_NEAR(d[0], 1.0, 1e-6);
+    EXPECT_NEAR(d[3], 1.6, 1e-6);
+    EXPECT_EQ(src.stats().skipped_objects, 2u);
+    EXPECT_EQ(src.stats().frames, 4u);
+  }
+}
+
+TEST(RawlogSource, MissingExternalImageIsNamed) {
+  const auto dir = hrgbd::test::tempDir("rawlog_noimg");
+  writeMixedRawlog(dir + "/m.rawlog", hrgbd::ImageStorage::ExternalPng);
+  std::filesystem::remove_all(dir + "/m_Images");
+  hrgbd::RawlogSource src(dir + "/m.rawlog");
+  try {
+    src.next();
+    FAIL();
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("RGBD_000000.png"), std::string::npos) << e.what();
+  }
+}
+
+TEST(RawlogSource, TruncatedGzipAndPlainFilesAreErrorsNotEndOfData) {
+  const auto dir = hrgbd::test::tempDir("rawlog_trunc");
+  writeMixedRawlog(dir + "/full.rawlog", hrgbd::ImageStorage::Inline);
+  // A plain (uncompressed) copy: CFileGZInputStream reads both.
+  std::string plain;
+  {
+    mrpt::io::CFileGZInputStream in(dir + "/full.rawlog");
+    char buf[65536];
+    for (size_t n; (n = in.Read(buf, sizeof(buf))) > 0;) plain.append(buf, n);
+  }
+  const auto gz = readBytes(dir + "/full.rawlog");
+  for (const auto& [name, bytes] : {std::pair{"gz", gz}, std::pair{"plain", plain}}) {
+    const auto path = dir + "/cut_" + name + ".rawlog";
+    std::ofstream(path, std::ios::binary) << bytes.substr(0, bytes.size() * 6 / 10);
+    hrgbd::RawlogSource src(path);
+    size_t frames = 0;
+    try {
+      while (src.next()) ++frames;
+      FAIL() << name << ": a truncated file must not look like a clean end";
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
+    }
+    EXPECT_GE(frames, 1u) << name << ": frames before the cut are delivered";
+  }
+  // The plain copy itself reads completely.
+  std::ofstream(dir + "/plain.rawlog", std::ios::binary) << plain;
+  hrgbd::RawlogSource src(dir + "/plain.rawlog");
+  EXPECT_EQ(readAll(src).size(), 4u);
+}
+
+TEST(RawlogSource, MissingFileIsAnError) {
+  EXPECT_THROW(hrgbd::RawlogSource("/nonexistent.rawlog"), std::runtime_error);
+}
+
+TEST(RawlogSource, MrptSampleOpenNI2Frame) {
+  const std::string path = "/usr/share/mrpt/datasets/tests_rgbd.rawlog";
+  if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " absent (package mrpt-common)";
+  hrgbd::RawlogSource src(path);
+  auto obs = src.next();
+  ASSERT_NE(obs, nullptr);
+  EXPECT_TRUE(obs->hasRangeImage);
+  const cv::Mat d = hrgbd::depthMetres(*obs);
+  double mean = cv::mean(d, d > 0)[0];
+  EXPECT_GT(mean, 0.3);  // a real indoor scene, metres
+  EXPECT_LT(mean, 10.0);
+}

@@ -1,0 +1,61 @@
+#include "rgbd_io/Trajectory.h"
+
+#include <mrpt/math/TPoint3D.h>
+
+#include <fstream>
+
+#include "TestData.h"
+
+using mrpt::poses::CPose3D;
+
+TEST(Trajectory, TumRoundTripKeepsPoses) {
+  const auto dir = hrgbd::test::tempDir("traj_rt");
+  hrgbd::Trajectory t{{1305031453.359684, CPose3D(1.0, -2.0, 0.5, 0.3, -0.2, 0.1)},
+                      {1305031453.391700, CPose3D(1.1, -2.1, 0.6, 0.35, -0.25, 0.12)}};
+  hrgbd::saveTumTrajectory(dir + "/t.txt", t);
+  const auto r = hrgbd::loadTumTrajectory(dir + "/t.txt");
+  ASSERT_EQ(r.size(), 2u);
+  for (size_t i = 0; i < 2; ++i) {
+    EXPECT_NEAR(r[i].t, t[i].t, 1e-6);
+    EXPECT_LT((r[i].pose.getHomogeneousMatrixVal<mrpt::math::CMatrixDouble44>() -
+               t[i].pose.getHomogeneousMatrixVal<mrpt::math::CMatrixDouble44>())
+                  .norm(),
+              1e-5);
+  }
+}
+
+TEST(Trajectory, MalformedLineIsReportedWithFileAndLine) {
+  const auto dir = hrgbd::test::tempDir("traj_bad");
+  std::ofstream(dir + "/t.txt") << "# header\n1 0 0 0 0 0 0 1\n2 0 0 zero 0 0 0 1\n";
+  try {
+    hrgbd::loadTumTrajectory(dir + "/t.txt");
+    FAIL() << "expected an exception";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("line 3"), std::string::npos) << e.what();
+  }
+  std::ofstream(dir + "/q.txt") << "1 0 0 0 0 0 0 0\n";
+  EXPECT_THROW(hrgbd::loadTumTrajectory(dir + "/q.txt"), std::runtime_error);
+}
+
+TEST(Trajectory, OpticalAndMrptConventionsAgree) {
+  // A camera at (1,2,3) looking along world +x. In the optical convention its z axis is world +x;
+  // in MRPT's convention its x axis is world +x. A point 2 m in front must land at (3,2,3).
+  const auto mrpt_pose = CPose3D(1, 2, 3, 0, 0, 0);
+  const auto optical = hrgbd::mrptToOptical(mrpt_pose);
+  const auto in_front_optical = optical.composePoint(mrpt::math::TPoint3D(0, 0, 2));
+  EXPECT_NEAR(in_front_optical.x, 3, 1e-12);
+  EXPECT_NEAR(in_front_optical.y, 2, 1e-12);
+  EXPECT_NEAR(in_front_optical.z, 3, 1e-12);
+  // Optical x (right) is MRPT -y (left); optical y (down) is MRPT -z (up).
+  const auto right = optical.composePoint(mrpt::math::TPoint3D(1, 0, 0)) - optical.translation();
+  const auto down = optical.composePoint(mrpt::math::TPoint3D(0, 1, 0)) - optical.translation();
+  EXPECT_NEAR(right.y, -1, 1e-12);
+  EXPECT_NEAR(down.z, -1, 1e-12);
+  // Round trip both ways.
+  const auto back = hrgbd::opticalToMrpt(optical);
+  EXPECT_NEAR((back.asVectorVal() - mrpt_pose.asVectorVal()).norm(), 0, 1e-12);
+  // And it is the inverse of MRPT's own "cameras coincide" relativePoseIntensityWRTDepth.
+  const CPose3D coincide(0, 0, 0, mrpt::DEG2RAD(-90.0), 0, mrpt::DEG2RAD(-90.0));
+  const auto I = coincide + hrgbd::mrptFrameInOptical();
+  EXPECT_NEAR(I.asVectorVal().norm(), 0, 1e-12);
+}

@@ -1,0 +1,35 @@
+#include "rgbd_io/TumLists.h"
+
+#include "TestData.h"
+
+TEST(TumLists, ParsesEntriesAndSkipsComments) {
+  const auto v = hrgbd::parseTumListText(
+      "# color images\n# timestamp filename\n\n1.0 rgb/1.png\n1.5 rgb/2.png\n", "rgb.txt");
+  ASSERT_EQ(v.size(), 2u);
+  EXPECT_DOUBLE_EQ(v[1].t, 1.5);
+  EXPECT_EQ(v[1].file, "rgb/2.png");
+  EXPECT_EQ(v[1].line, 5);
+}
+
+TEST(TumLists, OutOfOrderAndDuplicateStampsAreErrors) {
+  for (const char* text : {"1.0 a.png\n0.9 b.png\n", "1.0 a.png\n1.0 b.png\n"}) {
+    try {
+      hrgbd::parseTumListText(text, "rgb.txt");
+      FAIL() << "expected an exception for: " << text;
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find("rgb.txt' line 2"), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_THROW(hrgbd::parseTumListText("1.0\n", "rgb.txt"), std::runtime_error);
+  EXPECT_THROW(hrgbd::parseTumListText("nan a.png\n", "rgb.txt"), std::runtime_error);
+}
+
+TEST(TumLists, AssociationPairsNearestWithinLimit) {
+  const auto rgb = hrgbd::parseTumListText("1.000 r1\n1.033 r2\n1.066 r3\n2.000 r4\n", "rgb");
+  const auto depth = hrgbd::parseTumListText("1.004 d1\n1.030 d2\n1.070 d3\n1.5 d4\n", "depth");
+  const auto p = hrgbd::associateTumLists(rgb, depth, 0.02);
+  ASSERT_EQ(p.size(), 3u);  // r4 has no depth within 0.02 s
+  EXPECT_EQ(p[0].depth.file, "d1");
+  EXPECT_EQ(p[1].depth.file, "d2");
+  EXPECT_EQ(p[2].depth.file, "d3");
+}
