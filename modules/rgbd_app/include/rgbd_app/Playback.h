@@ -1,0 +1,45 @@
+#pragma once
+/** \file Playback.h
+ * The playback application: any FrameSource through RgbdOdometry, with trajectory, per-frame CSV
+ * and evaluation against ground truth. `hybrid-rgbd-odometry` is a thin main over runPlayback(). */
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+#include "rgbd_odometry/RgbdOdometry.h"
+
+namespace hrgbd {
+
+/** Command-line options; empty strings mean "from the INI [Playback] section". */
+struct PlaybackOptions {
+  std::string config;      //!< INI file ("" = built-in defaults)
+  std::string input;       //!< rawlog, TUM folder or "openni2"
+  std::string trajectory;  //!< output TUM trajectory
+  std::string csv;         //!< output per-frame CSV ("" = none)
+  std::string method;      //!< overrides [Odometry] method
+  std::string plot;        //!< evaluation PNG ("" = none)
+  int max_frames = 0;      //!< stop after this many frames (0 = all)
+  bool progress = true;    //!< progress bar on stderr
+};
+
+/** Summary of a run. */
+struct PlaybackSummary {
+  std::size_t frames = 0, registered = 0;
+  std::vector<FrameResult> results;
+  bool evaluated = false;
+  std::string eval_text, eval_json;
+  double median_ms = 0, p95_ms = 0;
+};
+
+/** INI sections this project knows; any other section in a config file is an error. */
+const std::vector<std::string>& knownConfigSections();
+
+/** Throws ConfigError if `cfg` has a section not in knownConfigSections(). */
+void rejectUnknownSections(const mrpt::config::CConfigFileBase& cfg);
+
+/** Runs the whole job; progress and results are written to `log`. Throws on bad configuration
+ * or unreadable input; frames that cannot be registered are flagged in the results. The
+ * trajectory and CSV are flushed line by line, so a run that stops keeps what it wrote. */
+PlaybackSummary runPlayback(const PlaybackOptions& options, std::ostream& log);
+
+}  // namespace hrgbd

@@ -1,0 +1,153 @@
+#include "rgbd_app/Playback.h"
+
+#include <mrpt/config/CConfigFileMemory.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+
+#include "rgbd_eval/EvalPlot.h"
+#include "rgbd_eval/Evaluate.h"
+#include "rgbd_io/Config.h"
+#include "rgbd_io/openFrameSource.h"
+
+namespace hrgbd {
+namespace {
+
+// [Playback] section: where the default job reads and writes. Relative paths are relative to
+// the INI file's folder.
+struct PlaybackSection {
+  std::string input, trajectory = "trajectory.txt", csv;
+  void load(const mrpt::config::CConfigFileBase& c, const std::string& base) {
+    rejectUnknownKeys(c, "Playback", {"input", "trajectory", "csv"});
+    auto path = [&](const std::string& key, const std::string& def) {
+      const auto v = c.read_string("Playback", key, def);
+      if (v.empty() || v == "openni2" || std::filesystem::path(v).is_absolute()) return v;
+      return (std::filesystem::path(base) / v).lexically_normal().string();
+    };
+    input = path("input", "");
+    trajectory = c.keyExists("Playback", "trajectory") ? path("trajectory", "") : trajectory;
+    csv = path("csv", "");
+  }
+};
+
+void writeCsvHeader(std::ostream& out) {
+  out << "timestamp,status,path,features,matches,inliers,scale_m,ms_prepare,ms_features,"
+         "ms_matching,ms_estimation,ms_refine,ms_total,detail\n";
+}
+
+void writeCsvRow(std::ostream& out, const FrameResult& r) {
+  out << std::fixed << std::setprecision(6) << r.t << "," << toString(r.status) << "," << r.path
+      << "," << r.features << "," << r.matches << "," << r.inliers << "," << std::setprecision(5)
+      << r.scale << "," << std::setprecision(3) << r.ms_prepare << "," << r.ms_features << ","
+      << r.ms_matching << "," << r.ms_estimation << "," << r.ms_refine << "," << r.ms_total << ",\""
+      << r.detail << "\"\n";
+  out.flush();
+}
+
+void progressBar(std::ostream& err, std::size_t n, std::size_t registered, double ms) {
+  err << "\r  frame " << std::setw(6) << n << "  registered " << std::setw(6) << registered << "  "
+      << std::fixed << std::setprecision(1) << std::setw(6) << ms << " ms/frame" << std::flush;
+}
+
+double percentile(std::vector<double> v, double q) {
+  if (v.empty()) return 0;
+  const auto k = static_cast<std::size_t>(q * (v.size() - 1) + 0.5);
+  std::nth_element(v.begin(), v.begin() + k, v.end());
+  return v[k];
+}
+
+}  // namespace
+
+const std::vector<std::string>& knownConfigSections() {
+  static const std::vector<std::string> s{"Playback", "Odometry", "ORB",       "MSSE",
+                                          "RANSAC",   "ICP",      "TumSource", "OpenNI2"};
+  return s;
+}
+
+void rejectUnknownSections(const mrpt::config::CConfigFileBase& cfg) {
+  std::vector<std::string> sections;
+  cfg.getAllSections(sections);
+  const auto& known = knownConfigSections();
+  for (const auto& s : sections)
+    if (!s.empty() && std::find(known.begin(), known.end(), s) == known.end())
+      throw ConfigError("unknown INI section [" + s + "]");
+}
+
+PlaybackSummary runPlayback(const PlaybackOptions& opt, std::ostream& log) {
+  std::unique_ptr<mrpt::config::CConfigFileBase> cfg =
+      opt.config.empty() ? std::make_unique<mrpt::config::CConfigFileMemory>()
+                         : loadIniFile(opt.config);
+  rejectUnknownSections(*cfg);
+  PlaybackSection pb;
+  pb.load(*cfg,
+          opt.config.empty() ? "." : std::filesystem::path(opt.config).parent_path().string());
+  OdometryParams params;
+  params.loadFromConfigFile(*cfg, "Odometry");
+  if (!opt.method.empty()) params.method = opt.method;
+  RgbdOdometry odometry(params);
+
+  const auto input = opt.input.empty() ? pb.input : opt.input;
+  if (input.empty()) throw ConfigError("no input: give --input or [Playback] input");
+  auto source = openFrameSource(input, *cfg);
+  log << "input: " << source->describe() << "\nmethod: " << params.method << "\n";
+
+  const auto traj_path = opt.trajectory.empty() ? pb.trajectory : opt.trajectory;
+  std::ofstream traj(traj_path);
+  if (!traj) throw std::runtime_error("cannot write trajectory '" + traj_path + "'");
+  traj << "# hybrid-rgbd-odometry " << params.method
+       << ": timestamp tx ty tz qx qy qz qw (optical frame of the first camera)\n";
+  const auto csv_path = opt.csv.empty() ? pb.csv : opt.csv;
+  std::ofstream csv;
+  if (!csv_path.empty()) {
+    csv.open(csv_path);
+    if (!csv) throw std::runtime_error("cannot write CSV '" + csv_path + "'");
+    writeCsvHeader(csv);
+  }
+
+  PlaybackSummary sum;
+  Trajectory estimate;
+  const bool bar = opt.progress && isatty(STDERR_FILENO);
+  while (auto obs = source->next()) {
+    const auto r = odometry.processObservation(*obs);
+    writeTumLine(traj, {r.t, r.pose});
+    traj.flush();
+    if (csv.is_open()) writeCsvRow(csv, r);
+    estimate.push_back({r.t, r.pose});
+    sum.registered += r.registered();
+    sum.results.push_back(r);
+    if (bar) progressBar(std::cerr, sum.results.size(), sum.registered, r.ms_total);
+    if (opt.max_frames > 0 && sum.results.size() >= static_cast<std::size_t>(opt.max_frames)) break;
+  }
+  if (bar) std::cerr << "\n";
+  sum.frames = sum.results.size();
+  std::vector<double> ms;
+  for (const auto& r : sum.results) ms.push_back(r.ms_total);
+  sum.median_ms = percentile(ms, 0.5);
+  sum.p95_ms = percentile(ms, 0.95);
+  log << "frames: " << sum.frames << ", registered: " << sum.registered
+      << ", skipped objects: " << source->stats().skipped_objects << "\n"
+      << "time per frame: median " << std::fixed << std::setprecision(1) << sum.median_ms
+      << " ms, 95th percentile " << sum.p95_ms << " ms\n"
+      << "trajectory: " << traj_path << "\n";
+
+  const auto gt = source->groundTruth();
+  if (!gt.empty() && estimate.size() >= 3) {
+    try {
+      const auto e = evaluateTrajectory(gt, estimate);
+      sum.evaluated = true;
+      sum.eval_text = toText(e);
+      sum.eval_json = toJson(e);
+      log << "evaluation against ground truth:\n" << sum.eval_text;
+      if (!opt.plot.empty()) plotEvaluation(e, opt.plot, input + " (" + params.method + ")");
+    } catch (const std::exception& ex) {
+      log << "evaluation skipped: " << ex.what() << "\n";
+    }
+  }
+  return sum;
+}
+
+}  // namespace hrgbd

@@ -1,0 +1,41 @@
+#pragma once
+/** \file OrbFeatures.h
+ * Photometric features (paper section III-B): ORB keypoints back-projected with the depth. */
+#include <mrpt/config/CLoadableOptions.h>
+
+#include <Eigen/Core>
+#include <opencv2/core.hpp>
+#include <vector>
+
+#include "rgbd_odometry/RgbdImage.h"
+
+namespace hrgbd {
+
+/** Parameters of extractOrbFeatures(). INI section [ORB]. */
+struct OrbParams : public mrpt::config::CLoadableOptions {
+  int n_features = 1000;      //!< [count] most keypoints kept by OpenCV's ORB
+  double scale_factor = 1.2;  //!< pyramid decimation ratio (> 1)
+  int n_levels = 8;           //!< pyramid levels
+  int fast_threshold = 20;    //!< FAST intensity threshold [grey levels]
+  double min_depth = 0.3;     //!< [m] keypoints nearer than this are dropped
+  double max_depth = 5.0;     //!< [m] keypoints farther than this are dropped (paper III-C)
+
+  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
+  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+};
+
+/** Keypoints with valid depth, their descriptors (one row each) and 3D points. */
+struct FeatureSet {
+  std::vector<cv::KeyPoint> keypoints;
+  cv::Mat descriptors;                  //!< CV_8U rows (ORB) or CV_32F rows (SHOT)
+  std::vector<Eigen::Vector3d> points;  //!< [m] optical frame of the colour camera
+  std::size_t detected = 0;             //!< keypoints found before the depth check
+  std::size_t dropped_no_depth = 0;     //!< keypoints without valid depth (dropped, counted)
+  std::size_t size() const { return points.size(); }
+};
+
+/** ORB on `image.grey`; each keypoint gets the depth of its pixel and is back-projected with
+ * equations (1)-(2). Keypoints without depth in [min_depth, max_depth] are dropped. */
+FeatureSet extractOrbFeatures(const RgbdImage& image, const OrbParams& params);
+
+}  // namespace hrgbd

@@ -1,0 +1,34 @@
+#pragma once
+/** \file RgbdImage.h
+ * A frame prepared for registration: grey image, depth registered to it, pinhole intrinsics. */
+#include <mrpt/obs/CObservation3DRangeScan.h>
+
+#include <Eigen/Core>
+#include <opencv2/core.hpp>
+
+namespace hrgbd {
+
+/** Pinhole intrinsics of the colour camera [px]. */
+struct PinholeCamera {
+  double fx = 525, fy = 525, cx = 319.5, cy = 239.5;
+  /** Paper eqs. (1)-(2): pixel (u, v) at depth z [m] -> point in the optical frame [m]. */
+  Eigen::Vector3d backProject(double u, double v, double z) const {
+    return {(u - cx) * z / fx, (v - cy) * z / fy, z};
+  }
+};
+
+/** Grey image (CV_8UC1), depth in metres registered to it (CV_32FC1, 0 = unknown), camera. */
+struct RgbdImage {
+  cv::Mat grey;
+  cv::Mat depth;
+  PinholeCamera cam;
+  double t = 0;  //!< [s]
+};
+
+/** Prepares an observation. If depth and colour cameras do not coincide, the depth is
+ * re-projected into the colour camera using `relativePoseIntensityWRTDepth` (nearest depth wins).
+ * Throws std::invalid_argument naming what is wrong: no colour image, no depth, ranges instead of
+ * depths, non-positive or non-finite intrinsics. Non-finite depth values become 0 (unknown). */
+RgbdImage prepareRgbdImage(const mrpt::obs::CObservation3DRangeScan& obs);
+
+}  // namespace hrgbd

@@ -1,0 +1,105 @@
+#pragma once
+/** \file RgbdOdometry.h
+ * Frame-to-frame RGB-D odometry (paper Algorithm 2): register each frame to the last registered
+ * one and chain the motions, G_n = G_{n-1} T_{n,n-1} (eq. 8). */
+#include <mrpt/config/CLoadableOptions.h>
+#include <mrpt/obs/CObservation3DRangeScan.h>
+#include <mrpt/poses/CPose3D.h>
+
+#include <optional>
+#include <string>
+
+#include "rgbd_odometry/IcpRefine.h"
+#include "rgbd_odometry/MsseEstimator.h"
+#include "rgbd_odometry/OrbFeatures.h"
+#include "rgbd_odometry/RansacEstimator.h"
+
+namespace hrgbd {
+
+/** Registration methods: the paper's and its baselines (Tables I and II). */
+enum class Method {
+  Hybrid,     //!< ORB + MSSE; geometric features when too few ORB features (paper)
+  RgbOnly,    //!< ORB + MSSE always
+  DepthOnly,  //!< geometric (IS3D + SHOT) + MSSE always
+  Ransac,     //!< ORB + RANSAC
+  RansacIcp,  //!< ORB + RANSAC, refined by ICP on ~15,000 points
+};
+Method parseMethod(const std::string& name);  //!< hybrid|rgb_only|depth_only|ransac|ransac_icp
+const char* toString(Method m);
+
+/** What to do with the pose of a frame that cannot be registered. */
+enum class FailurePolicy { ConstantVelocity, Hold };
+
+/** Parameters of RgbdOdometry. INI section [Odometry]; the stages read [ORB], [MSSE], [RANSAC]
+ * and [ICP]. */
+struct OdometryParams : public mrpt::config::CLoadableOptions {
+  std::string method = "hybrid";  //!< hybrid|rgb_only|depth_only|ransac|ransac_icp
+  int min_orb_features = 50;      //!< [count] fewer ORB features with depth -> geometric path
+  int max_hamming_distance = 64;  //!< [bits] ORB pairs farther apart are never matched
+  std::string on_failure = "constant_velocity";  //!< constant_velocity|hold
+  double max_step_translation = 0.5;  //!< [m] larger frame-to-frame motion is flagged as failure
+  double max_step_rotation_deg = 30;  //!< [deg] larger frame-to-frame rotation is flagged too
+  OrbParams orb;
+  MsseParams msse;
+  RansacParams ransac;
+  IcpParams icp;
+
+  /** Loads [Odometry] from `s` and the stage sections [ORB], [MSSE], [RANSAC], [ICP]. */
+  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
+  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+};
+
+/** Outcome of one frame. Poses are of the colour camera's optical frame in the first frame's
+ * optical frame (TUM convention). */
+struct FrameResult {
+  enum class Status {
+    FirstFrame,         //!< the reference; pose = identity
+    Ok,                 //!< registered
+    BadInput,           //!< no colour / depth / intrinsics (see `detail`); pose predicted
+    TooFewFeatures,     //!< geometric path needed but not available; pose predicted
+    TooFewMatches,      //!< pose predicted
+    DegenerateSamples,  //!< every 3-point sample degenerate; pose predicted
+    TooFewInliers,      //!< pose predicted
+    ImplausibleMotion,  //!< estimate beyond max_step_*; pose predicted
+  };
+  double t = 0;  //!< [s]
+  mrpt::poses::CPose3D pose;
+  Status status = Status::FirstFrame;
+  std::string detail;                //!< human-readable reason when not Ok
+  std::string path = "photometric";  //!< photometric|geometric|none
+  std::size_t features = 0, matches = 0, inliers = 0;
+  double scale = 0;  //!< [m] estimator noise scale
+  // [ms] per stage
+  double ms_prepare = 0, ms_features = 0, ms_matching = 0, ms_estimation = 0, ms_refine = 0,
+         ms_total = 0;
+  bool registered() const { return status == Status::Ok || status == Status::FirstFrame; }
+};
+const char* toString(FrameResult::Status s);
+
+class RgbdOdometry {
+ public:
+  /** Throws ConfigError for an unknown method or policy, or a method not available. */
+  explicit RgbdOdometry(const OdometryParams& params);
+  /** Registers one frame. Never throws for bad frames (they come back flagged). */
+  FrameResult processObservation(const mrpt::obs::CObservation3DRangeScan& obs);
+  /** Forgets everything: the next frame becomes the new origin. */
+  void reset();
+  const mrpt::poses::CPose3D& pose() const { return m_pose; }
+
+ private:
+  struct Keyframe {
+    RgbdImage image;
+    FeatureSet features;
+    mrpt::poses::CPose3D pose;
+  };
+  FrameResult predict(FrameResult r, FrameResult::Status why, std::string detail);
+
+  OdometryParams m_params;
+  Method m_method;
+  FailurePolicy m_policy;
+  std::optional<Keyframe> m_ref;    // last registered frame
+  mrpt::poses::CPose3D m_pose;      // pose of the latest frame
+  mrpt::poses::CPose3D m_velocity;  // last registered per-frame motion
+};
+
+}  // namespace hrgbd

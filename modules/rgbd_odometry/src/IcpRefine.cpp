@@ -1,0 +1,78 @@
+#include "rgbd_odometry/IcpRefine.h"
+
+#include <mrpt/maps/CSimplePointsMap.h>
+#include <mrpt/poses/CPose3DPDF.h>
+#include <mrpt/poses/CPose3DPDFGaussian.h>
+#include <mrpt/slam/CICP.h>
+
+#include <cmath>
+
+#include "rgbd_io/Config.h"
+
+namespace hrgbd {
+namespace {
+
+mrpt::maps::CSimplePointsMap cloudOf(const RgbdImage& f, int target_points, double max_depth) {
+  const int valid = cv::countNonZero(f.depth > 0);
+  const int stride = std::max(1, static_cast<int>(std::sqrt(valid / std::max(1, target_points))));
+  mrpt::maps::CSimplePointsMap m;
+  m.reserve(valid / (stride * stride) + 1);
+  for (int v = 0; v < f.depth.rows; v += stride)
+    for (int u = 0; u < f.depth.cols; u += stride) {
+      const float z = f.depth.at<float>(v, u);
+      if (!(z > 0 && z <= max_depth)) continue;
+      const auto p = f.cam.backProject(u, v, z);
+      m.insertPointFast(p.x(), p.y(), p.z());
+    }
+  return m;
+}
+
+mrpt::poses::CPose3D toPose(const Eigen::Isometry3d& T) {
+  mrpt::math::CMatrixDouble44 H(T.matrix());
+  return mrpt::poses::CPose3D(H);
+}
+
+}  // namespace
+
+void IcpParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) {
+  rejectUnknownKeys(c, s, {"target_points", "max_iterations", "max_distance", "max_depth"});
+  MRPT_LOAD_CONFIG_VAR_CS(target_points, int);
+  MRPT_LOAD_CONFIG_VAR_CS(max_iterations, int);
+  MRPT_LOAD_CONFIG_VAR_CS(max_distance, double);
+  MRPT_LOAD_CONFIG_VAR_CS(max_depth, double);
+  requireValid(target_points >= 100, s, "target_points", target_points, "must be >= 100");
+  requireValid(max_iterations >= 1, s, "max_iterations", max_iterations, "must be >= 1");
+  requireValid(max_distance > 0, s, "max_distance", max_distance, "must be > 0 m");
+  requireValid(max_depth > 0, s, "max_depth", max_depth, "must be > 0 m");
+}
+
+void IcpParams::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const {
+  MRPT_SAVE_CONFIG_VAR_COMMENT(target_points, "[count] points per cloud after down-sampling");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(max_iterations, "ICP iterations");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(max_distance, "[m] initial pairing distance");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(max_depth, "[m] farther points unused");
+}
+
+IcpResult refineIcp(const RgbdImage& source, const RgbdImage& target,
+                    const Eigen::Isometry3d& initial, const IcpParams& p) {
+  const auto ms = cloudOf(source, p.target_points, p.max_depth);
+  const auto mt = cloudOf(target, p.target_points, p.max_depth);
+  mrpt::slam::CICP icp;
+  icp.options.maxIterations = p.max_iterations;
+  icp.options.thresholdDist = p.max_distance;
+  icp.options.thresholdAng = 0;
+  icp.options.smallestThresholdDist = 0.2 * p.max_distance;
+  mrpt::slam::CICP::TReturnInfo info;
+  mrpt::poses::CPose3DPDFGaussian init;
+  init.mean = toPose(initial);
+  // Align3DPDF(m1, m2, x) finds the pose of m2 in m1's frame: m1 = target, m2 = source.
+  const auto pdf = icp.Align3DPDF(&mt, &ms, init, info);
+  IcpResult r;
+  r.iterations = info.nIterations;
+  r.goodness = info.goodness;
+  const auto H = pdf->getMeanVal().getHomogeneousMatrixVal<mrpt::math::CMatrixDouble44>();
+  r.T.matrix() = H.asEigen();
+  return r;
+}
+
+}  // namespace hrgbd

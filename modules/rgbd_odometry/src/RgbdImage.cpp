@@ -1,0 +1,67 @@
+#include "rgbd_odometry/RgbdImage.h"
+
+#include <cmath>
+#include <opencv2/imgproc.hpp>
+#include <stdexcept>
+
+#include "rgbd_io/RgbdFrame.h"
+
+namespace hrgbd {
+namespace {
+
+PinholeCamera toPinhole(const mrpt::img::TCamera& c, const char* which) {
+  PinholeCamera p{c.fx(), c.fy(), c.cx(), c.cy()};
+  for (double v : {p.fx, p.fy, p.cx, p.cy})
+    if (!std::isfinite(v))
+      throw std::invalid_argument(std::string(which) + " intrinsics are not finite");
+  if (!(p.fx > 0 && p.fy > 0))
+    throw std::invalid_argument(std::string(which) + " focal length <= 0");
+  return p;
+}
+
+// Depth seen from the colour camera: each depth pixel -> 3D (depth camera) -> colour pixel.
+cv::Mat registerDepth(const cv::Mat& depth, const PinholeCamera& dcam, const PinholeCamera& ccam,
+                      const mrpt::poses::CPose3D& colour_wrt_depth, cv::Size colour_size) {
+  cv::Mat out(colour_size, CV_32FC1, cv::Scalar(0));
+  for (int v = 0; v < depth.rows; ++v)
+    for (int u = 0; u < depth.cols; ++u) {
+      const float z = depth.at<float>(v, u);
+      if (!(z > 0)) continue;
+      // MRPT sensor frame: x forward, y left, z up.
+      const mrpt::math::TPoint3D p_mrpt(z, -(u - dcam.cx) * z / dcam.fx,
+                                        -(v - dcam.cy) * z / dcam.fy);
+      const auto p = colour_wrt_depth.inverseComposePoint(p_mrpt);  // colour optical frame
+      if (p.z <= 0) continue;
+      const int uc = static_cast<int>(std::lround(ccam.fx * p.x / p.z + ccam.cx));
+      const int vc = static_cast<int>(std::lround(ccam.fy * p.y / p.z + ccam.cy));
+      if (uc < 0 || vc < 0 || uc >= out.cols || vc >= out.rows) continue;
+      float& d = out.at<float>(vc, uc);
+      if (d == 0 || p.z < d) d = static_cast<float>(p.z);
+    }
+  return out;
+}
+
+}  // namespace
+
+RgbdImage prepareRgbdImage(const mrpt::obs::CObservation3DRangeScan& obs) {
+  if (!obs.hasIntensityImage) throw std::invalid_argument("frame has no colour image");
+  if (!obs.hasRangeImage) throw std::invalid_argument("frame has no depth image");
+  const cv::Mat bgr = colourBgr(obs);
+  if (bgr.empty()) throw std::invalid_argument("frame's colour image is empty or not 8-bit");
+  RgbdImage f;
+  f.t = timestampSeconds(obs);
+  cv::cvtColor(bgr, f.grey, cv::COLOR_BGR2GRAY);
+  f.cam = toPinhole(obs.cameraParamsIntensity, "colour camera");
+  cv::Mat depth = depthMetres(obs);  // throws for range_is_depth = false
+  cv::patchNaNs(depth, 0);
+  cv::threshold(depth, depth, 1e6, 0, cv::THRESH_TOZERO_INV);  // +inf and absurd values -> 0
+  if (obs.doDepthAndIntensityCamerasCoincide() && depth.size() == f.grey.size()) {
+    f.depth = depth;
+  } else {
+    f.depth = registerDepth(depth, toPinhole(obs.cameraParams, "depth camera"), f.cam,
+                            obs.relativePoseIntensityWRTDepth, f.grey.size());
+  }
+  return f;
+}
+
+}  // namespace hrgbd

@@ -1,0 +1,235 @@
+#include "rgbd_odometry/RgbdOdometry.h"
+
+#include <chrono>
+#include <cmath>
+
+#include "rgbd_io/Config.h"
+#include "rgbd_odometry/DescriptorMatching.h"
+
+namespace hrgbd {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double msSince(Clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+
+mrpt::poses::CPose3D toPose(const Eigen::Isometry3d& T) {
+  return mrpt::poses::CPose3D(mrpt::math::CMatrixDouble44(T.matrix()));
+}
+
+double rotationDeg(const Eigen::Isometry3d& T) {
+  return mrpt::RAD2DEG(Eigen::AngleAxisd(T.rotation()).angle());
+}
+
+FrameResult::Status fromEstimate(RigidEstimate::Status s) {
+  switch (s) {
+    case RigidEstimate::Status::TooFewMatches:
+      return FrameResult::Status::TooFewMatches;
+    case RigidEstimate::Status::DegenerateSamples:
+      return FrameResult::Status::DegenerateSamples;
+    case RigidEstimate::Status::TooFewInliers:
+      return FrameResult::Status::TooFewInliers;
+    default:
+      return FrameResult::Status::Ok;
+  }
+}
+
+}  // namespace
+
+Method parseMethod(const std::string& name) {
+  if (name == "hybrid") return Method::Hybrid;
+  if (name == "rgb_only") return Method::RgbOnly;
+  if (name == "depth_only") return Method::DepthOnly;
+  if (name == "ransac") return Method::Ransac;
+  if (name == "ransac_icp") return Method::RansacIcp;
+  throw ConfigError("[Odometry] method = " + name +
+                    ": must be hybrid, rgb_only, depth_only, ransac or ransac_icp");
+}
+
+const char* toString(Method m) {
+  switch (m) {
+    case Method::Hybrid:
+      return "hybrid";
+    case Method::RgbOnly:
+      return "rgb_only";
+    case Method::DepthOnly:
+      return "depth_only";
+    case Method::Ransac:
+      return "ransac";
+    case Method::RansacIcp:
+      return "ransac_icp";
+  }
+  return "?";
+}
+
+const char* toString(FrameResult::Status s) {
+  using S = FrameResult::Status;
+  switch (s) {
+    case S::FirstFrame:
+      return "first_frame";
+    case S::Ok:
+      return "ok";
+    case S::BadInput:
+      return "bad_input";
+    case S::TooFewFeatures:
+      return "too_few_features";
+    case S::TooFewMatches:
+      return "too_few_matches";
+    case S::DegenerateSamples:
+      return "degenerate_samples";
+    case S::TooFewInliers:
+      return "too_few_inliers";
+    case S::ImplausibleMotion:
+      return "implausible_motion";
+  }
+  return "?";
+}
+
+void OdometryParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
+                                        const std::string& s) {
+  rejectUnknownKeys(c, s,
+                    {"method", "min_orb_features", "max_hamming_distance", "on_failure",
+                     "max_step_translation", "max_step_rotation_deg"});
+  MRPT_LOAD_CONFIG_VAR_CS(method, string);
+  MRPT_LOAD_CONFIG_VAR_CS(min_orb_features, int);
+  MRPT_LOAD_CONFIG_VAR_CS(max_hamming_distance, int);
+  MRPT_LOAD_CONFIG_VAR_CS(on_failure, string);
+  MRPT_LOAD_CONFIG_VAR_CS(max_step_translation, double);
+  MRPT_LOAD_CONFIG_VAR_CS(max_step_rotation_deg, double);
+  parseMethod(method);
+  if (on_failure != "constant_velocity" && on_failure != "hold")
+    throw ConfigError("[" + s + "] on_failure = " + on_failure +
+                      ": must be constant_velocity or hold");
+  requireValid(min_orb_features >= 0, s, "min_orb_features", min_orb_features, "must be >= 0");
+  requireValid(max_hamming_distance > 0 && max_hamming_distance <= 256, s, "max_hamming_distance",
+               max_hamming_distance, "must be in (0, 256] bits");
+  requireValid(max_step_translation > 0, s, "max_step_translation", max_step_translation,
+               "must be > 0 m");
+  requireValid(max_step_rotation_deg > 0 && max_step_rotation_deg <= 180, s,
+               "max_step_rotation_deg", max_step_rotation_deg, "must be in (0, 180] deg");
+  orb.loadFromConfigFile(c, "ORB");
+  msse.loadFromConfigFile(c, "MSSE");
+  ransac.loadFromConfigFile(c, "RANSAC");
+  icp.loadFromConfigFile(c, "ICP");
+}
+
+void OdometryParams::saveToConfigFile(mrpt::config::CConfigFileBase& c,
+                                      const std::string& s) const {
+  MRPT_SAVE_CONFIG_VAR_COMMENT(method, "hybrid|rgb_only|depth_only|ransac|ransac_icp");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(min_orb_features, "[count] fewer ORB features: geometric path");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(max_hamming_distance, "[bits] ORB match limit");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(on_failure, "constant_velocity|hold: pose of unregistered frames");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(max_step_translation, "[m] larger motion per frame: failure");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(max_step_rotation_deg, "[deg] larger rotation per frame: failure");
+  orb.saveToConfigFile(c, "ORB");
+  msse.saveToConfigFile(c, "MSSE");
+  ransac.saveToConfigFile(c, "RANSAC");
+  icp.saveToConfigFile(c, "ICP");
+}
+
+RgbdOdometry::RgbdOdometry(const OdometryParams& params)
+    : m_params(params),
+      m_method(parseMethod(params.method)),
+      m_policy(params.on_failure == "hold" ? FailurePolicy::Hold
+                                           : FailurePolicy::ConstantVelocity) {
+  if (m_method == Method::DepthOnly)
+    throw ConfigError(
+        "[Odometry] method = depth_only: the geometric path (IS3D + SHOT) is not "
+        "built yet");
+}
+
+void RgbdOdometry::reset() {
+  m_ref.reset();
+  m_pose = m_velocity = mrpt::poses::CPose3D();
+}
+
+FrameResult RgbdOdometry::predict(FrameResult r, FrameResult::Status why, std::string detail) {
+  r.status = why;
+  r.detail = std::move(detail);
+  if (m_policy == FailurePolicy::ConstantVelocity) m_pose = m_pose + m_velocity;
+  r.pose = m_pose;
+  return r;
+}
+
+FrameResult RgbdOdometry::processObservation(const mrpt::obs::CObservation3DRangeScan& obs) {
+  const auto t_start = Clock::now();
+  FrameResult r;
+  r.t = mrpt::Clock::toDouble(obs.timestamp);
+  auto done = [&](FrameResult res) {
+    res.ms_total = msSince(t_start);
+    return res;
+  };
+
+  // Algorithm 2, line 3: the frame and its ORB features.
+  auto t0 = Clock::now();
+  RgbdImage image;
+  try {
+    image = prepareRgbdImage(obs);
+  } catch (const std::exception& e) {
+    r.path = "none";
+    return done(predict(r, FrameResult::Status::BadInput, e.what()));
+  }
+  r.ms_prepare = msSince(t0);
+  t0 = Clock::now();
+  FeatureSet features = extractOrbFeatures(image, m_params.orb);
+  r.features = features.size();
+  r.ms_features = msSince(t0);
+
+  // Line 4: too few visual features -> geometric path (section III-A).
+  if (m_method == Method::Hybrid &&
+      r.features < static_cast<std::size_t>(m_params.min_orb_features)) {
+    r.path = "geometric";
+    return done(predict(r, FrameResult::Status::TooFewFeatures,
+                        std::to_string(r.features) + " ORB features; geometric path not built"));
+  }
+  if (!m_ref) {
+    m_ref = Keyframe{image, features, m_pose};
+    r.pose = m_pose;
+    return done(r);
+  }
+
+  // Line 14: mutual matching against the last registered frame.
+  t0 = Clock::now();
+  const auto matched = matchMutual(features.descriptors, m_ref->features.descriptors,
+                                   cv::NORM_HAMMING, m_params.max_hamming_distance);
+  Correspondences corr;
+  for (const auto& m : matched.matches) {
+    corr.source.push_back(features.points[m.source]);
+    corr.target.push_back(m_ref->features.points[m.target]);
+  }
+  r.matches = corr.size();
+  r.ms_matching = msSince(t0);
+
+  // Line 15: robust estimation (MSSE, or the RANSAC baselines), then the optional ICP.
+  t0 = Clock::now();
+  const bool ransac = m_method == Method::Ransac || m_method == Method::RansacIcp;
+  const auto est =
+      ransac ? estimateRansac(corr, m_params.ransac) : estimateMsse(corr, m_params.msse);
+  r.inliers = est.inliers.size();
+  r.scale = est.scale;
+  r.ms_estimation = msSince(t0);
+  if (!est.ok()) return done(predict(r, fromEstimate(est.status), toString(est.status)));
+  Eigen::Isometry3d T = est.T;
+  if (m_method == Method::RansacIcp) {
+    t0 = Clock::now();
+    T = refineIcp(image, m_ref->image, T, m_params.icp).T;
+    r.ms_refine = msSince(t0);
+  }
+  if (T.translation().norm() > m_params.max_step_translation ||
+      rotationDeg(T) > m_params.max_step_rotation_deg)
+    return done(predict(r, FrameResult::Status::ImplausibleMotion,
+                        "step of " + std::to_string(T.translation().norm()) + " m, " +
+                            std::to_string(rotationDeg(T)) + " deg"));
+
+  // Line 16: G_n = G_ref T (eq. 8); this frame becomes the reference.
+  const auto pose = m_ref->pose + toPose(T);
+  m_velocity = pose - m_pose;
+  m_pose = pose;
+  m_ref = Keyframe{image, std::move(features), m_pose};
+  r.status = FrameResult::Status::Ok;
+  r.pose = m_pose;
+  return done(r);
+}
+
+}  // namespace hrgbd
