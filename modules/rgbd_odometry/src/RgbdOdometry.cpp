@@ -23,16 +23,21 @@ double rotationDeg(const Eigen::Isometry3d& T) {
 }
 
 FrameResult::Status fromEstimate(RigidEstimate::Status s) {
+  using E = RigidEstimate::Status;
+  using F = FrameResult::Status;
   switch (s) {
-    case RigidEstimate::Status::TooFewMatches:
-      return FrameResult::Status::TooFewMatches;
-    case RigidEstimate::Status::DegenerateSamples:
-      return FrameResult::Status::DegenerateSamples;
-    case RigidEstimate::Status::TooFewInliers:
-      return FrameResult::Status::TooFewInliers;
-    default:
-      return FrameResult::Status::Ok;
+    case E::Ok:
+      return F::Ok;
+    case E::TooFewMatches:
+      return F::TooFewMatches;
+    case E::DegenerateSamples:
+      return F::DegenerateSamples;
+    case E::TooFewInliers:
+      return F::TooFewInliers;
+    case E::LargeResiduals:
+      return F::LargeResiduals;
   }
+  return F::TooFewInliers;  // unreachable: every status is handled above
 }
 
 }  // namespace
@@ -80,6 +85,8 @@ const char* toString(FrameResult::Status s) {
       return "degenerate_samples";
     case S::TooFewInliers:
       return "too_few_inliers";
+    case S::LargeResiduals:
+      return "large_residuals";
     case S::ImplausibleMotion:
       return "implausible_motion";
   }

@@ -89,6 +89,8 @@ const char* toString(RigidEstimate::Status s) {
       return "degenerate_samples";
     case RigidEstimate::Status::TooFewInliers:
       return "too_few_inliers";
+    case RigidEstimate::Status::LargeResiduals:
+      return "large_residuals";
   }
   return "?";
 }

@@ -18,9 +18,12 @@ struct MsseParams : public mrpt::config::CLoadableOptions {
    * random outliers (MsseEstimator_test.BreakdownAgainstRansac). Use 0.2 for outlier-heavy
    * matching. */
   double k_fraction = 0.5;
-  double T = 2.5;               //!< MSSE threshold, eq. (4): ~99 % of Gaussian inliers
-  int min_matches = 10;         //!< fewer matches -> status TooFewMatches
-  int min_inliers = 8;          //!< fewer inliers -> status TooFewInliers
+  double T = 2.5;        //!< MSSE threshold, eq. (4): ~99 % of Gaussian inliers
+  int min_matches = 10;  //!< fewer matches -> status TooFewMatches
+  int min_inliers = 8;   //!< fewer inliers -> status TooFewInliers
+  /** [m] inlier noise scale (sigma) above which the fit is rejected (status LargeResiduals):
+   * with few matches eq. (5) alone accepts anything (seen: 10 matches, sigma = 0.6 m). */
+  double max_scale = 0.05;
   double min_spread = 0.01;     //!< [m] smallest triangle height of a usable 3-point sample
   bool depth_weighting = true;  //!< eq. (6) weights from depth (else all 1)
   int seed = 1;                 //!< random generator seed (same seed, same result)

@@ -60,6 +60,7 @@ struct FrameResult {
     TooFewMatches,      //!< pose predicted
     DegenerateSamples,  //!< every 3-point sample degenerate; pose predicted
     TooFewInliers,      //!< pose predicted
+    LargeResiduals,     //!< inlier noise scale implausible; pose predicted
     ImplausibleMotion,  //!< estimate beyond max_step_*; pose predicted
   };
   double t = 0;  //!< [s]

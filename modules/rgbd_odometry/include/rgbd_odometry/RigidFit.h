@@ -46,7 +46,7 @@ std::vector<double> residuals(const Correspondences& c, const Eigen::Isometry3d&
 
 /** Result of a robust estimator. */
 struct RigidEstimate {
-  enum class Status { Ok, TooFewMatches, DegenerateSamples, TooFewInliers };
+  enum class Status { Ok, TooFewMatches, DegenerateSamples, TooFewInliers, LargeResiduals };
   Status status = Status::TooFewMatches;
   Eigen::Isometry3d T = Eigen::Isometry3d::Identity();  //!< maps source points into target
   std::vector<std::size_t> inliers;

@@ -1,0 +1,52 @@
+#pragma once
+/** \file Render.h
+ * Ideal (noise-free) ray-cast rendering of a Scene, and the Kinect-like sensor model applied to
+ * it. Hand-written: no Debian library here renders depth with a Kinect noise model. */
+#include <Eigen/Geometry>
+#include <opencv2/core.hpp>
+#include <random>
+
+#include "rgbd_io/Trajectory.h"
+#include "rgbd_sim/Scene.h"
+
+namespace hrgbd::sim {
+
+/** Pinhole camera of the simulated sensor [px]. */
+struct SimCamera {
+  int width = 640, height = 480;
+  double fx = 525, fy = 525, cx = 319.5, cy = 239.5;
+};
+
+/** A noise-free render. */
+struct IdealFrame {
+  cv::Mat colour;     //!< CV_32FC3 linear RGB in [0, 1] (before exposure and noise)
+  cv::Mat depth;      //!< CV_32FC1 [m] along the optical axis, 0 = no surface
+  cv::Mat incidence;  //!< CV_32FC1 |cos| of the angle between ray and surface normal
+};
+
+/** Ray-casts `scene` from `pose` (optical frame in the world: z forward, x right, y down). */
+IdealFrame renderIdeal(const Scene& scene, const mrpt::poses::CPose3D& pose, const SimCamera& cam);
+
+/** Kinect (structured light) parameters. INI keys of [Simulator] use the same names. */
+struct KinectModel {
+  double baseline = 0.075;                   //!< [m] projector-camera baseline
+  double disparity_step = 0.125;             //!< [px] disparity quantisation (1/8 px)
+  double disparity_noise = 0.06;             //!< [px] per-pixel disparity noise (std)
+  double disparity_noise_correlated = 0.08;  //!< [px] smooth noise field (std), ~16 px blobs
+  double min_depth = 0.5, max_depth = 4.5;   //!< [m] no depth outside
+  double min_incidence = 0.2;                //!< |cos| below which (grazing) there is no depth
+  double edge_dropout = 0.6;    //!< probability of no depth next to a depth discontinuity
+  double flying_pixels = 0.15;  //!< probability of a mixed depth at a discontinuity
+  double colour_noise = 2.5;    //!< [grey levels] colour noise (std)
+  double exposure_ms = 12;      //!< [ms] exposure: motion blur along the image motion
+  double auto_exposure = 0.06;  //!< relative amplitude of slow gain changes
+};
+
+/** Applies the sensor model. `previous_pose` (pose `exposure_ms` earlier) sets the motion blur.
+ * Returns 8-bit BGR colour and 16-bit depth in units of 1/`depth_factor` m. */
+void applyKinectModel(const IdealFrame& ideal, const Scene& scene, const SimCamera& cam,
+                      const mrpt::poses::CPose3D& pose, const mrpt::poses::CPose3D& previous_pose,
+                      double gain, const KinectModel& model, double depth_factor, std::mt19937& rng,
+                      cv::Mat& bgr, cv::Mat& depth_raw);
+
+}  // namespace hrgbd::sim

@@ -1,0 +1,53 @@
+#pragma once
+/** \file Simulator.h
+ * RGB-D sequences with exact ground truth: a Scene, a camera path (procedural sweep or replayed
+ * real hand-held motion) and the Kinect model, written as a rawlog and/or a TUM folder. */
+#include <mrpt/config/CLoadableOptions.h>
+
+#include <string>
+
+#include "rgbd_io/RawlogWriter.h"
+#include "rgbd_io/Trajectory.h"
+#include "rgbd_sim/Render.h"
+
+namespace hrgbd::sim {
+
+/** Parameters of simulate(). INI section [Simulator]. */
+struct SimParams : public mrpt::config::CLoadableOptions {
+  std::string scene = "desk";  //!< texture|structure|structure_texture|desk|wall
+  bool far = false;            //!< camera at ~2 m instead of ~1 m
+  int frames = 30;             //!< [count]
+  double fps = 30;             //!< [Hz]
+  int seed = 1;                //!< noise and jitter seed (same seed, same sequence)
+  /** "sweep" (procedural sweep along the structure with hand-held jitter) or a TUM trajectory
+   * file whose relative motion is replayed, re-anchored to look at the scene. */
+  std::string motion = "sweep";
+  KinectModel sensor;
+
+  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
+  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+};
+
+/** Camera trajectory (optical frame in the world) sampled at `times`. */
+Trajectory cameraPath(const Scene& scene, const SimParams& params,
+                      const std::vector<double>& times);
+
+/** The first pose of a sweep: at `distance` from look_at along view_dir, looking at look_at. */
+mrpt::poses::CPose3D lookAt(const Eigen::Vector3d& eye, const Eigen::Vector3d& target);
+
+struct SimOutputs {
+  std::string rawlog;      //!< "" = none; ground truth goes to <stem>_groundtruth.txt
+  std::string tum_folder;  //!< "" = none; rgb/, depth/, rgb.txt, depth.txt, groundtruth.txt
+  ImageStorage images = ImageStorage::Inline;  //!< colour storage in the rawlog
+};
+
+struct SimResult {
+  int frames = 0;
+  double ms_per_frame = 0;  //!< [ms] median render + sensor model time
+  Trajectory ground_truth;
+};
+
+/** Renders and writes the sequence. Throws for bad parameters or unwritable outputs. */
+SimResult simulate(const SimParams& params, const SimOutputs& outputs);
+
+}  // namespace hrgbd::sim

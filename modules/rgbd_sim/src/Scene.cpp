@@ -1,0 +1,83 @@
+#include "rgbd_sim/Scene.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace hrgbd::sim {
+namespace {
+
+using V = Eigen::Vector3d;
+
+Quad quad(V o, V u, V v, V colour, int texture, double scale = 12.0) {
+  return {o, u, v, colour, texture, scale};
+}
+
+// A zig-zag of panels along x, standing on the floor: each panel 0.5 m wide, 0.8 m tall,
+// alternately turned +-45 deg about z (like the TUM fr3 structure sequences).
+void addZigZag(Scene& s, bool textured) {
+  const double w = 0.5, h = 0.8, a = M_PI / 4;
+  V p(-1.4, 0.0, 0.0);
+  for (int i = 0; i < 8; ++i) {
+    const double ang = (i % 2 == 0) ? a : -a;
+    const V u(w * std::cos(ang), w * std::sin(ang), 0.0);
+    s.quads.push_back(quad(p, u, V(0, 0, h), V(0.82, 0.74, 0.60), textured ? 100 + i : -1));
+    p += u;
+  }
+}
+
+}  // namespace
+
+void addBox(Scene& s, const V& mn, const V& mx, const V& colour, int texture) {
+  const V d = mx - mn;
+  const V ex(d.x(), 0, 0), ey(0, d.y(), 0), ez(0, 0, d.z());
+  s.quads.push_back(quad(mn, ex, ez, colour, texture));       // front (y = min)
+  s.quads.push_back(quad(mn + ey, ex, ez, colour, texture));  // back
+  s.quads.push_back(quad(mn, ey, ez, colour, texture));       // left
+  s.quads.push_back(quad(mn + ex, ey, ez, colour, texture));  // right
+  s.quads.push_back(quad(mn + ez, ex, ey, colour, texture < 0 ? -1 : texture + 1));  // top
+}
+
+const std::vector<std::string>& sceneTypes() {
+  static const std::vector<std::string> t{"texture", "structure", "structure_texture", "desk",
+                                          "wall"};
+  return t;
+}
+
+Scene makeScene(const std::string& type, bool far) {
+  Scene s;
+  s.name = type + (far ? "_far" : "_near");
+  s.distance = far ? 2.0 : 1.0;
+  const V grey(0.55, 0.55, 0.52);
+  if (type == "texture") {
+    // A large textured poster on the floor; the camera looks down at it.
+    s.quads.push_back(quad(V(-3, -3, 0), V(6, 0, 0), V(0, 6, 0), V(0.8, 0.8, 0.8), 1, 10.0));
+    s.look_at = V(0, 0, 0);
+    s.view_dir = V(0, -0.6, 1.0);
+  } else if (type == "structure" || type == "structure_texture") {
+    s.quads.push_back(quad(V(-3, -3, 0), V(6, 0, 0), V(0, 6, 0), grey, -1));
+    addZigZag(s, type == "structure_texture");
+    s.look_at = V(0.0, 0.0, 0.35);
+  } else if (type == "desk") {
+    s.quads.push_back(quad(V(-2, -1, 0), V(4, 0, 0), V(0, 3, 0), V(0.45, 0.42, 0.40), 7, 8.0));
+    s.quads.push_back(quad(V(-2, 2, 0), V(4, 0, 0), V(0, 0, 2.5), V(0.85, 0.85, 0.80), -1));
+    s.quads.push_back(quad(V(-2, -1, 0), V(0, 3, 0), V(0, 0, 2.5), V(0.80, 0.82, 0.85), -1));
+    addBox(s, V(-0.8, 1.0, 0.0), V(0.8, 1.8, 0.72), V(0.60, 0.45, 0.30), 11);  // desk
+    addBox(s, V(-0.5, 1.2, 0.72), V(-0.1, 1.5, 0.95), V(0.2, 0.3, 0.6), 21);   // box
+    addBox(s, V(0.2, 1.3, 0.72), V(0.45, 1.6, 1.05), V(0.7, 0.2, 0.2), 31);    // box
+    addBox(s, V(0.55, 1.1, 0.72), V(0.75, 1.25, 0.80), V(0.9, 0.9, 0.9), 41);  // book
+    addBox(s, V(-1.6, 1.4, 0.0), V(-1.1, 1.9, 0.5), V(0.3, 0.5, 0.3), 51);     // crate
+    s.look_at = V(0.0, 1.3, 0.75);
+    s.view_dir = V(0, -1, 0.6);
+    s.sweep_axis = V(1, 0, 0);
+  } else if (type == "wall") {
+    s.quads.push_back(quad(V(-4, 0, -1), V(8, 0, 0), V(0, 0, 4), V(0.85, 0.84, 0.80), -1));
+    s.look_at = V(0, 0, 1.0);
+    s.view_dir = V(0, -1, 0.05);
+  } else {
+    throw std::invalid_argument("unknown scene type '" + type +
+                                "' (texture, structure, structure_texture, desk, wall)");
+  }
+  return s;
+}
+
+}  // namespace hrgbd::sim

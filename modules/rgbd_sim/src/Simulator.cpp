@@ -1,0 +1,160 @@
+#include "rgbd_sim/Simulator.h"
+
+#include <mrpt/poses/CPose3DInterpolator.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <opencv2/imgcodecs.hpp>
+#include <sstream>
+
+#include "rgbd_io/Config.h"
+#include "rgbd_io/Intrinsics.h"
+#include "rgbd_io/RawlogSource.h"
+#include "rgbd_io/RgbdFrame.h"
+
+namespace hrgbd::sim {
+
+void SimParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) {
+  rejectUnknownKeys(c, s, {"scene", "far", "frames", "fps", "seed", "motion"});
+  MRPT_LOAD_CONFIG_VAR_CS(scene, string);
+  MRPT_LOAD_CONFIG_VAR_CS(far, bool);
+  MRPT_LOAD_CONFIG_VAR_CS(frames, int);
+  MRPT_LOAD_CONFIG_VAR_CS(fps, double);
+  MRPT_LOAD_CONFIG_VAR_CS(seed, int);
+  MRPT_LOAD_CONFIG_VAR_CS(motion, string);
+  const auto& types = sceneTypes();
+  if (std::find(types.begin(), types.end(), scene) == types.end())
+    throw ConfigError("[" + s + "] scene = " + scene +
+                      ": must be texture, structure, structure_texture, desk or wall");
+  requireValid(frames >= 1, s, "frames", frames, "must be >= 1");
+  requireValid(fps > 0 && fps <= 1000, s, "fps", fps, "must be in (0, 1000] Hz");
+}
+
+void SimParams::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const {
+  MRPT_SAVE_CONFIG_VAR_COMMENT(scene, "texture|structure|structure_texture|desk|wall");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(far, "camera at ~2 m (true) or ~1 m (false)");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(frames, "[count] frames to render");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(fps, "[Hz] frame rate");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(seed, "noise and jitter seed");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(motion, "sweep, or a TUM trajectory file to replay");
+}
+
+mrpt::poses::CPose3D lookAt(const Eigen::Vector3d& eye, const Eigen::Vector3d& target) {
+  const Eigen::Vector3d z = (target - eye).normalized();
+  const Eigen::Vector3d x = z.cross(Eigen::Vector3d::UnitZ()).normalized();  // right
+  const Eigen::Vector3d y = z.cross(x);                                      // down
+  mrpt::math::CMatrixDouble33 R;
+  for (int i = 0; i < 3; ++i) R(i, 0) = x[i], R(i, 1) = y[i], R(i, 2) = z[i];
+  return mrpt::poses::CPose3D::FromRotationAndTranslation(
+      R, mrpt::math::TVector3D(eye.x(), eye.y(), eye.z()));
+}
+
+Trajectory cameraPath(const Scene& scene, const SimParams& p, const std::vector<double>& times) {
+  const Eigen::Vector3d axis = scene.sweep_axis.normalized(), view = scene.view_dir.normalized();
+  const double amp = 0.25 + 0.2 * scene.distance;  // [m] sweep amplitude
+  Trajectory out;
+  if (p.motion == "sweep") {
+    const double ph = 0.7 * p.seed;
+    for (double t : times) {
+      // Slow sweep along the structure plus hand-held jitter (a few Hz, ~1 cm, ~0.5 deg).
+      const double s = amp * std::sin(2 * M_PI * t / 8.0);
+      const Eigen::Vector3d jitter(0.006 * std::sin(2 * M_PI * 1.3 * t + ph),
+                                   0.005 * std::sin(2 * M_PI * 2.1 * t + 2 * ph),
+                                   0.004 * std::sin(2 * M_PI * 3.4 * t + 3 * ph));
+      const Eigen::Vector3d look_jitter(0.01 * std::sin(2 * M_PI * 0.9 * t + ph), 0,
+                                        0.01 * std::sin(2 * M_PI * 1.7 * t + ph));
+      const Eigen::Vector3d eye = scene.look_at + view * scene.distance + axis * s + jitter;
+      out.push_back({t, lookAt(eye, scene.look_at + axis * 0.8 * s + look_jitter)});
+    }
+    return out;
+  }
+  // Replay: the real trajectory's motion relative to its first pose, from the sweep's start.
+  const auto real = loadTumTrajectory(p.motion);
+  if (real.size() < 2) throw std::runtime_error("motion file '" + p.motion + "' has < 2 poses");
+  mrpt::poses::CPose3DInterpolator interp;
+  for (const auto& q : real)
+    interp.insert(mrpt::Clock::fromDouble(q.t - real[0].t), q.pose - real[0].pose);
+  const auto start = lookAt(scene.look_at + view * scene.distance, scene.look_at);
+  const double span = real.back().t - real[0].t;
+  for (double t : times) {
+    if (t > span)
+      throw std::runtime_error("motion file '" + p.motion + "' covers only " +
+                               std::to_string(span) + " s");
+    mrpt::poses::CPose3D rel;
+    bool valid = false;
+    interp.interpolate(mrpt::Clock::fromDouble(t), rel, valid);
+    if (!valid)
+      throw std::runtime_error("cannot interpolate '" + p.motion + "' at " + std::to_string(t));
+    out.push_back({t, start + rel});
+  }
+  return out;
+}
+
+SimResult simulate(const SimParams& p, const SimOutputs& outputs) {
+  const auto scene = makeScene(p.scene, p.far);
+  const SimCamera cam;
+  const auto camera = pinholeCamera(cam.fx, cam.fy, cam.cx, cam.cy, cam.width, cam.height);
+  constexpr double kDepthFactor = 5000;  // TUM's convention: PNG value / 5000 = metres
+  constexpr double kStart = 1000.0;      // [s] time stamp of the first frame
+
+  std::vector<double> times, before;
+  for (int i = 0; i < p.frames; ++i) {
+    times.push_back(i / p.fps);
+    before.push_back(std::max(0.0, i / p.fps - p.sensor.exposure_ms * 1e-3));
+  }
+  const auto path = cameraPath(scene, p, times);
+  const auto path_before = cameraPath(scene, p, before);
+
+  std::unique_ptr<RawlogWriter> rawlog;
+  if (!outputs.rawlog.empty())
+    rawlog = std::make_unique<RawlogWriter>(outputs.rawlog, outputs.images, 9);
+  std::ofstream rgb_txt, depth_txt;
+  if (!outputs.tum_folder.empty()) {
+    std::filesystem::create_directories(outputs.tum_folder + "/rgb");
+    std::filesystem::create_directories(outputs.tum_folder + "/depth");
+    rgb_txt.open(outputs.tum_folder + "/rgb.txt");
+    depth_txt.open(outputs.tum_folder + "/depth.txt");
+    if (!rgb_txt || !depth_txt)
+      throw std::runtime_error("cannot write into '" + outputs.tum_folder + "'");
+    rgb_txt << "# color images\n# file: rgbd-simulate " << scene.name << "\n# timestamp filename\n";
+    depth_txt << "# depth maps\n# file: rgbd-simulate " << scene.name << "\n# timestamp filename\n";
+  }
+
+  std::mt19937 rng(static_cast<std::uint32_t>(p.seed));
+  SimResult res;
+  std::vector<double> ms;
+  for (int i = 0; i < p.frames; ++i) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const double t = kStart + times[i];
+    const double gain = 1.0 + p.sensor.auto_exposure * std::sin(2 * M_PI * times[i] / 3.7 + p.seed);
+    cv::Mat bgr, depth;
+    applyKinectModel(renderIdeal(scene, path[i].pose, cam), scene, cam, path[i].pose,
+                     path_before[i].pose, gain, p.sensor, kDepthFactor, rng, bgr, depth);
+    ms.push_back(
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+    res.ground_truth.push_back({t, path[i].pose});
+    if (rawlog)
+      rawlog->write(*makeRgbdObservation(bgr, depth, 1.0 / kDepthFactor, camera, t, "RGBD_SIM"));
+    if (rgb_txt.is_open()) {
+      std::ostringstream name;
+      name << std::fixed << std::setprecision(6) << t << ".png";
+      cv::imwrite(outputs.tum_folder + "/rgb/" + name.str(), bgr);
+      cv::imwrite(outputs.tum_folder + "/depth/" + name.str(), depth);
+      rgb_txt << std::fixed << std::setprecision(6) << t << " rgb/" << name.str() << "\n";
+      depth_txt << std::fixed << std::setprecision(6) << t << " depth/" << name.str() << "\n";
+    }
+  }
+  res.frames = p.frames;
+  std::nth_element(ms.begin(), ms.begin() + ms.size() / 2, ms.end());
+  res.ms_per_frame = ms[ms.size() / 2];
+  if (rawlog) saveTumTrajectory(groundTruthPathFor(outputs.rawlog), res.ground_truth);
+  if (rgb_txt.is_open())
+    saveTumTrajectory(outputs.tum_folder + "/groundtruth.txt", res.ground_truth);
+  return res;
+}
+
+}  // namespace hrgbd::sim
