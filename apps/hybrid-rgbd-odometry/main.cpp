@@ -21,7 +21,12 @@ int main(int argc, char** argv) {
                                       "OUT.png", cmd);
     TCLAP::ValueArg<int> max_frames("n", "max-frames", "stop after N frames", false, 0, "N", cmd);
     TCLAP::SwitchArg quiet("q", "quiet", "no progress bar", cmd);
+    TCLAP::SwitchArg print("", "print-config", "print the effective configuration and exit", cmd);
     cmd.parse(argc, argv);
+    if (print.getValue()) {
+      std::cout << hrgbd::effectiveConfig(config.getValue());
+      return 0;
+    }
     hrgbd::PlaybackOptions o{config.getValue(),     input.getValue(),  traj.getValue(),
                              csv.getValue(),        method.getValue(), plot.getValue(),
                              max_frames.getValue(), !quiet.getValue()};

@@ -12,6 +12,7 @@
 #include "rgbd_eval/EvalPlot.h"
 #include "rgbd_eval/Evaluate.h"
 #include "rgbd_io/Config.h"
+#include "rgbd_io/TumSource.h"
 #include "rgbd_io/openFrameSource.h"
 
 namespace hrgbd {
@@ -77,11 +78,31 @@ void rejectUnknownSections(const mrpt::config::CConfigFileBase& cfg) {
       throw ConfigError("unknown INI section [" + s + "]");
 }
 
-PlaybackSummary runPlayback(const PlaybackOptions& opt, std::ostream& log) {
+namespace {
+std::unique_ptr<mrpt::config::CConfigFileBase> loadChecked(const std::string& file) {
   std::unique_ptr<mrpt::config::CConfigFileBase> cfg =
-      opt.config.empty() ? std::make_unique<mrpt::config::CConfigFileMemory>()
-                         : loadIniFile(opt.config);
+      file.empty() ? std::make_unique<mrpt::config::CConfigFileMemory>() : loadIniFile(file);
   rejectUnknownSections(*cfg);
+  return cfg;
+}
+}  // namespace
+
+std::string effectiveConfig(const std::string& config_file) {
+  const auto cfg = loadChecked(config_file);
+  OdometryParams odo;
+  odo.loadFromConfigFile(*cfg, "Odometry");
+  TumSourceParams tum;
+  tum.loadFromConfigFile(*cfg, "TumSource");
+  mrpt::config::CConfigFileMemory out;
+  for (const auto& key : {"input", "trajectory", "csv"})
+    out.write("Playback", key, cfg->read_string("Playback", key, ""));
+  odo.saveToConfigFile(out, "Odometry");
+  tum.saveToConfigFile(out, "TumSource");
+  return out.getContent();
+}
+
+PlaybackSummary runPlayback(const PlaybackOptions& opt, std::ostream& log) {
+  const auto cfg = loadChecked(opt.config);
   PlaybackSection pb;
   pb.load(*cfg,
           opt.config.empty() ? "." : std::filesystem::path(opt.config).parent_path().string());

@@ -37,7 +37,7 @@ void RawlogWriter::write(const mrpt::serialization::CSerializable& obj) {
     std::snprintf(name, sizeof(name), "%s_%06zu.%s", scan->sensorLabel.c_str(), m_count,
                   m_images == ImageStorage::ExternalPng ? "png" : "jpg");
     const std::string file = m_images_dir + "/" + name;
-    if (!scan->intensityImage.saveToFile(file, 95))
+    if (!scan->intensityImage.saveToFile(file, 90))
       throw std::runtime_error("cannot write image '" + file + "'");
     copy.intensityImage.setExternalStorage(name);
     *m_archive << copy;

@@ -37,6 +37,9 @@ const std::vector<std::string>& knownConfigSections();
 /** Throws ConfigError if `cfg` has a section not in knownConfigSections(). */
 void rejectUnknownSections(const mrpt::config::CConfigFileBase& cfg);
 
+/** The effective configuration (defaults + `config_file`, "" for defaults) as INI text. */
+std::string effectiveConfig(const std::string& config_file);
+
 /** Runs the whole job; progress and results are written to `log`. Throws on bad configuration
  * or unreadable input; frames that cannot be registered are flagged in the results. The
  * trajectory and CSV are flushed line by line, so a run that stops keeps what it wrote. */

@@ -19,7 +19,7 @@ namespace hrgbd {
 enum class ImageStorage {
   Inline,        //!< inside the rawlog (self-contained, larger)
   ExternalPng,   //!< lossless PNG files in "<stem>_Images/", as MRPT's grabbers do
-  ExternalJpeg,  //!< JPEG (quality 95) in "<stem>_Images/", for small bundled sequences
+  ExternalJpeg,  //!< JPEG (quality 90) in "<stem>_Images/", for small bundled sequences
 };
 
 class RawlogWriter {
