@@ -1,6 +1,7 @@
 #include "rgbd_odometry/DescriptorMatching.h"
 
-#include <opencv2/features2d.hpp>
+#include <limits>
+#include <opencv2/core.hpp>
 
 namespace hrgbd {
 
@@ -8,19 +9,32 @@ MatchResult matchMutual(const cv::Mat& source, const cv::Mat& target, int norm,
                         double max_distance) {
   MatchResult out;
   if (source.empty() || target.empty()) return out;
-  cv::BFMatcher matcher(norm, false);
-  std::vector<cv::DMatch> fwd, bwd;
-  matcher.match(source, target, fwd);
-  matcher.match(target, source, bwd);
-  std::vector<int> back(target.rows, -1);
-  for (const auto& m : bwd) back[m.queryIdx] = m.trainIdx;
-  for (const auto& m : fwd) {
-    if (back[m.trainIdx] != m.queryIdx) {
+  // One distance matrix (OpenCV), then both nearest neighbours from it: source->target is the
+  // row minimum, target->source the column minimum.
+  cv::Mat dist;
+  const bool hamming = norm == cv::NORM_HAMMING || norm == cv::NORM_HAMMING2;
+  cv::batchDistance(source, target, dist, hamming ? CV_32S : CV_32F, cv::noArray(), norm, 0);
+  if (hamming) dist.convertTo(dist, CV_32F);
+  std::vector<int> best_row(dist.rows), best_col(dist.cols, -1);
+  std::vector<float> col_min(dist.cols, std::numeric_limits<float>::max());
+  for (int i = 0; i < dist.rows; ++i) {
+    const float* d = dist.ptr<float>(i);
+    int bi = 0;
+    for (int j = 0; j < dist.cols; ++j) {
+      if (d[j] < d[bi]) bi = j;
+      if (d[j] < col_min[j]) col_min[j] = d[j], best_col[j] = i;
+    }
+    best_row[i] = bi;
+  }
+  for (int i = 0; i < dist.rows; ++i) {
+    const int j = best_row[i];
+    const float d = dist.at<float>(i, j);
+    if (best_col[j] != i) {
       ++out.rejected_by_mutual_check;
-    } else if (m.distance > max_distance) {
+    } else if (d > max_distance) {
       ++out.rejected_by_distance;
     } else {
-      out.matches.push_back({m.queryIdx, m.trainIdx, m.distance});
+      out.matches.push_back({i, j, d});
     }
   }
   return out;

@@ -1,0 +1,40 @@
+#include "rgbd_odometry/DescriptorMatching.h"
+
+#include "TestData.h"
+
+namespace {
+cv::Mat rows(std::initializer_list<std::initializer_list<uint8_t>> v) {
+  cv::Mat m(0, 1, CV_8U);
+  for (auto r : v) m.push_back(cv::Mat(std::vector<uint8_t>(r)).t());
+  return m;
+}
+}  // namespace
+
+TEST(DescriptorMatching, MutualCheckAndDistanceLimit) {
+  // One-byte binary descriptors. Source 0 and 1 both prefer target 0 (0x00); target 0 prefers
+  // source 0 (distance 0), so source 1 fails the mutual check. Source 2 <-> target 1 is mutual
+  // but 3 bits apart.
+  const cv::Mat src = rows({{0x00}, {0x01}, {0xF0}});
+  const cv::Mat tgt = rows({{0x00}, {0xF7}});
+  const auto r = hrgbd::matchMutual(src, tgt, cv::NORM_HAMMING, 8);
+  ASSERT_EQ(r.matches.size(), 2u);
+  EXPECT_EQ(r.matches[0].source, 0);
+  EXPECT_EQ(r.matches[0].target, 0);
+  EXPECT_EQ(r.matches[1].source, 2);
+  EXPECT_EQ(r.matches[1].target, 1);
+  EXPECT_FLOAT_EQ(r.matches[1].distance, 3);
+  EXPECT_EQ(r.rejected_by_mutual_check, 1u);
+  const auto strict = hrgbd::matchMutual(src, tgt, cv::NORM_HAMMING, 2);
+  EXPECT_EQ(strict.matches.size(), 1u);
+  EXPECT_EQ(strict.rejected_by_distance, 1u);
+  EXPECT_TRUE(hrgbd::matchMutual(cv::Mat(), tgt, cv::NORM_HAMMING, 8).matches.empty());
+}
+
+TEST(DescriptorMatching, FloatDescriptorsWithL2) {
+  cv::Mat src = (cv::Mat_<float>(2, 2) << 0, 0, 1, 1),
+          tgt = (cv::Mat_<float>(2, 2) << 1, 1.1f, 0, 0.1f);
+  const auto r = hrgbd::matchMutual(src, tgt, cv::NORM_L2, 1.0);
+  ASSERT_EQ(r.matches.size(), 2u);
+  EXPECT_EQ(r.matches[0].target, 1);
+  EXPECT_EQ(r.matches[1].target, 0);
+}
