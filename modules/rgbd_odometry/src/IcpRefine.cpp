@@ -27,11 +27,6 @@ mrpt::maps::CSimplePointsMap cloudOf(const RgbdImage& f, int target_points, doub
   return m;
 }
 
-mrpt::poses::CPose3D toPose(const Eigen::Isometry3d& T) {
-  mrpt::math::CMatrixDouble44 H(T.matrix());
-  return mrpt::poses::CPose3D(H);
-}
-
 }  // namespace
 
 void IcpParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) {

@@ -14,10 +14,6 @@ double msSince(Clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
 
-mrpt::poses::CPose3D toPose(const Eigen::Isometry3d& T) {
-  return mrpt::poses::CPose3D(mrpt::math::CMatrixDouble44(T.matrix()));
-}
-
 double rotationDeg(const Eigen::Isometry3d& T) {
   return mrpt::RAD2DEG(Eigen::AngleAxisd(T.rotation()).angle());
 }

@@ -79,6 +79,10 @@ std::vector<double> residuals(const Correspondences& c, const Eigen::Isometry3d&
   return r;
 }
 
+mrpt::poses::CPose3D toPose(const Eigen::Isometry3d& T) {
+  return mrpt::poses::CPose3D(mrpt::math::CMatrixDouble44(T.matrix()));
+}
+
 const char* toString(RigidEstimate::Status s) {
   switch (s) {
     case RigidEstimate::Status::Ok:

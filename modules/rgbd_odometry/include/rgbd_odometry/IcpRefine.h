@@ -6,6 +6,7 @@
 #include <Eigen/Geometry>
 
 #include "rgbd_odometry/RgbdImage.h"
+#include "rgbd_odometry/RigidFit.h"
 
 namespace hrgbd {
 

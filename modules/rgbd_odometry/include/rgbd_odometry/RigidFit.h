@@ -5,6 +5,8 @@
  *
  * Written here because mrpt::tfest::se3_l2 (Horn's method) takes no per-point weights, which
  * equation (6) needs; with unit weights the two agree (tested). */
+#include <mrpt/poses/CPose3D.h>
+
 #include <Eigen/Geometry>
 #include <cstdint>
 #include <functional>
@@ -56,5 +58,8 @@ struct RigidEstimate {
 };
 
 const char* toString(RigidEstimate::Status s);
+
+/** The same transform as an MRPT pose. */
+mrpt::poses::CPose3D toPose(const Eigen::Isometry3d& T);
 
 }  // namespace hrgbd
