@@ -9,6 +9,29 @@
 
 using namespace hrgbd::sim;
 
+namespace {
+// Relative depth differences |z_b - z| / z of frame A's depth pixels (every `step`-th) seen from
+// pose B, where frame B has depth.
+std::vector<double> depthAgreement(const cv::Mat& depth_a, const mrpt::poses::CPose3D& pose_a,
+                                   const cv::Mat& depth_b, const mrpt::poses::CPose3D& pose_b,
+                                   const SimCamera& cam, int step) {
+  std::vector<double> rel;
+  for (int v = 0; v < cam.height; v += step)
+    for (int u = 0; u < cam.width; u += step) {
+      const double z = depth_a.at<uint16_t>(v, u) / 5000.0;
+      if (z <= 0) continue;
+      const mrpt::math::TPoint3D pc((u - cam.cx) * z / cam.fx, (v - cam.cy) * z / cam.fy, z);
+      const auto q = pose_b.inverseComposePoint(pose_a.composePoint(pc));
+      const int u1 = static_cast<int>(std::lround(cam.fx * q.x / q.z + cam.cx));
+      const int v1 = static_cast<int>(std::lround(cam.fy * q.y / q.z + cam.cy));
+      if (u1 < 0 || v1 < 0 || u1 >= cam.width || v1 >= cam.height) continue;
+      const double z1 = depth_b.at<uint16_t>(v1, u1) / 5000.0;
+      if (z1 > 0) rel.push_back(std::abs(z1 - q.z) / q.z);
+    }
+  return rel;
+}
+}  // namespace
+
 TEST(Simulator, TwoFramesOverlapWithinTheNoiseLevel) {
   SimParams p;
   p.scene = "desk";
@@ -22,19 +45,7 @@ TEST(Simulator, TwoFramesOverlapWithinTheNoiseLevel) {
                      1.0, p.sensor, 5000, rng, bgr[i], depth[i]);
   ASSERT_GT((path[1].pose - path[0].pose).norm(), 0.05);  // the camera really moved
 
-  std::vector<double> rel;  // relative depth differences
-  for (int v = 0; v < cam.height; v += 4)
-    for (int u = 0; u < cam.width; u += 4) {
-      const double z = depth[0].at<uint16_t>(v, u) / 5000.0;
-      if (z <= 0) continue;
-      const mrpt::math::TPoint3D pc((u - cam.cx) * z / cam.fx, (v - cam.cy) * z / cam.fy, z);
-      const auto q = path[1].pose.inverseComposePoint(path[0].pose.composePoint(pc));
-      const int u1 = static_cast<int>(std::lround(cam.fx * q.x / q.z + cam.cx));
-      const int v1 = static_cast<int>(std::lround(cam.fy * q.y / q.z + cam.cy));
-      if (u1 < 0 || v1 < 0 || u1 >= cam.width || v1 >= cam.height) continue;
-      const double z1 = depth[1].at<uint16_t>(v1, u1) / 5000.0;
-      if (z1 > 0) rel.push_back(std::abs(z1 - q.z) / q.z);
-    }
+  auto rel = depthAgreement(depth[0], path[0].pose, depth[1], path[1].pose, cam, 4);
   ASSERT_GT(rel.size(), 5000u);
   std::sort(rel.begin(), rel.end());
   // Kinect noise at 1-2 m is ~0.3-1 % of the depth; occlusions and edges make the tail.
@@ -43,19 +54,9 @@ TEST(Simulator, TwoFramesOverlapWithinTheNoiseLevel) {
   // And a wrong pose (5 cm further along the view, world y here) must not overlap as well.
   auto shifted = path[1].pose;
   shifted.y_incr(0.05);
-  int close = 0, n = 0;
-  for (int v = 0; v < cam.height; v += 8)
-    for (int u = 0; u < cam.width; u += 8) {
-      const double z = depth[0].at<uint16_t>(v, u) / 5000.0;
-      if (z <= 0) continue;
-      const mrpt::math::TPoint3D pc((u - cam.cx) * z / cam.fx, (v - cam.cy) * z / cam.fy, z);
-      const auto q = shifted.inverseComposePoint(path[0].pose.composePoint(pc));
-      const int u1 = static_cast<int>(std::lround(cam.fx * q.x / q.z + cam.cx));
-      const int v1 = static_cast<int>(std::lround(cam.fy * q.y / q.z + cam.cy));
-      if (u1 < 0 || v1 < 0 || u1 >= cam.width || v1 >= cam.height) continue;
-      const double z1 = depth[1].at<uint16_t>(v1, u1) / 5000.0;
-      if (z1 > 0) ++n, close += std::abs(z1 - q.z) / q.z < 0.01;
-    }
+  const auto wrong = depthAgreement(depth[0], path[0].pose, depth[1], shifted, cam, 8);
+  const auto close = std::count_if(wrong.begin(), wrong.end(), [](double r) { return r < 0.01; });
+  const auto n = wrong.size();
   EXPECT_LT(static_cast<double>(close) / n, 0.5);
 }
 

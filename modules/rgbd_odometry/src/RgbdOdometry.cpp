@@ -187,7 +187,7 @@ FrameResult RgbdOdometry::processObservation(const mrpt::obs::CObservation3DRang
                         std::to_string(r.features) + " ORB features; geometric path not built"));
   }
   if (!m_ref) {
-    m_ref = Keyframe{image, features, m_pose};
+    m_ref = Keyframe{image, std::move(features), m_pose};
     r.pose = m_pose;
     return done(r);
   }

@@ -101,13 +101,14 @@ SimResult simulate(const SimParams& p, const SimOutputs& outputs) {
   constexpr double kDepthFactor = 5000;  // TUM's convention: PNG value / 5000 = metres
   constexpr double kStart = 1000.0;      // [s] time stamp of the first frame
 
-  std::vector<double> times, before;
-  for (int i = 0; i < p.frames; ++i) {
-    times.push_back(i / p.fps);
-    before.push_back(std::max(0.0, i / p.fps - p.sensor.exposure_ms * 1e-3));
-  }
-  const auto path = cameraPath(scene, p, times);
-  const auto path_before = cameraPath(scene, p, before);
+  // Poses at each frame time and at the start of its exposure, in one call (one file load).
+  std::vector<double> times;
+  for (int i = 0; i < p.frames; ++i) times.push_back(i / p.fps);
+  for (int i = 0; i < p.frames; ++i)
+    times.push_back(std::max(0.0, i / p.fps - p.sensor.exposure_ms * 1e-3));
+  const auto poses = cameraPath(scene, p, times);
+  const Trajectory path(poses.begin(), poses.begin() + p.frames);
+  const Trajectory path_before(poses.begin() + p.frames, poses.end());
 
   std::unique_ptr<RawlogWriter> rawlog;
   if (!outputs.rawlog.empty())
