@@ -1,5 +1,6 @@
-// Per-stage timings of the photometric path at 640x480 on one core. Frames: two consecutive
-// real fr3/teddy frames when ../shared/data is present, else the bundled simulated desk.
+// Per-stage timings at 640x480 on one core. Photometric path: two consecutive real fr3/teddy
+// frames when ../shared/data is present, else the bundled simulated desk. Geometric path: the
+// bundled plain zig-zag (rawlogs/structure_near), where the hybrid method takes it.
 // Run: build/benchmarks/odometry_benchmark --benchmark_repetitions=9
 //        --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
@@ -9,7 +10,11 @@
 #include "rgbd_io/RawlogSource.h"
 #include "rgbd_io/TumSource.h"
 #include "rgbd_odometry/DescriptorMatching.h"
+#include "rgbd_odometry/GeometricFeatures.h"
+#include "rgbd_odometry/Is3dSampling.h"
+#include "rgbd_odometry/PlaneIcp.h"
 #include "rgbd_odometry/RgbdOdometry.h"
+#include "rgbd_odometry/ShotDescriptor.h"
 
 namespace {
 
@@ -79,12 +84,108 @@ void BM_WholeFrame(benchmark::State& s) {
   s.SetLabel("two frames: reference + one registration");
 }
 
+// Geometric path (paper III-C to III-G) on two frames of the plain zig-zag.
+struct GeometricPair {
+  mrpt::obs::CObservation3DRangeScan::Ptr obs[2];
+  RgbdImage img[2];
+  GeometricFeatures feat[2];
+  Correspondences corr;
+  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+};
+
+const GeometricPair& geometricPair() {
+  static const GeometricPair p = [] {
+    GeometricPair q;
+    RawlogSource src(std::string(HRGBD_SOURCE_DIR) + "/rawlogs/structure_near.rawlog");
+    for (int i = 0; i < 2; ++i) {
+      q.obs[i] = src.next();
+      q.img[i] = prepareRgbdImage(*q.obs[i]);
+      q.feat[i] = extractGeometricFeatures(q.img[i], GeometricParams());
+    }
+    const auto& f = q.feat;
+    for (const auto& m :
+         matchMutual(f[1].features.descriptors, f[0].features.descriptors, cv::NORM_L2, 1.0)
+             .matches) {
+      q.corr.source.push_back(f[1].features.points[m.source]);
+      q.corr.target.push_back(f[0].features.points[m.target]);
+    }
+    MsseParams msse;
+    msse.k_fraction = OdometryParams().geometric_k_fraction;
+    q.T = estimateMsse(q.corr, msse).T;
+    return q;
+  }();
+  return p;
+}
+
+void BM_Downsample(benchmark::State& s) {
+  DownsampledCloud c;
+  for (auto _ : s) benchmark::DoNotOptimize(c = downsampleDepth(geometricPair().img[1], {}));
+  s.counters["points"] = c.points.size();
+}
+void BM_Normals(benchmark::State& s) {
+  const auto& g = geometricPair().feat[1];
+  for (auto _ : s) {
+    const PointKdTree tree(g.cloud);
+    benchmark::DoNotOptimize(estimateNormals(g.cloud, tree, 3.0 * g.radius));
+  }
+  s.SetLabel("KD-tree + plane fits");
+}
+void BM_Is3d(benchmark::State& s) {
+  for (auto _ : s) benchmark::DoNotOptimize(sampleIs3d(geometricPair().feat[1].normals, {}));
+  s.counters["is3d"] = geometricPair().feat[1].features.size();
+}
+void BM_Shot(benchmark::State& s) {
+  const auto& g = geometricPair().feat[1];
+  const auto keys = sampleIs3d(g.normals, {}).indices;
+  const PointKdTree tree(g.cloud);
+  for (auto _ : s)
+    benchmark::DoNotOptimize(computeShot(g.cloud, g.normals, tree, keys, 5.0 * g.radius, 10));
+}
+void BM_ShotMatching(benchmark::State& s) {
+  const auto& f = geometricPair().feat;
+  for (auto _ : s)
+    benchmark::DoNotOptimize(
+        matchMutual(f[1].features.descriptors, f[0].features.descriptors, cv::NORM_L2, 1.0));
+  s.counters["matches"] = geometricPair().corr.size();
+}
+void BM_GeometricMsse(benchmark::State& s) {
+  MsseParams msse;
+  msse.k_fraction = OdometryParams().geometric_k_fraction;
+  for (auto _ : s) benchmark::DoNotOptimize(estimateMsse(geometricPair().corr, msse));
+}
+void BM_PlaneIcp(benchmark::State& s) {
+  const auto& f = geometricPair().feat;
+  for (auto _ : s) {
+    const PointKdTree tree(f[0].cloud);
+    benchmark::DoNotOptimize(refinePointToPlane(f[1].cloud, f[0].cloud, f[0].normals, tree,
+                                                geometricPair().T, 10, 0.05));
+  }
+}
+void BM_GeometricFrame(benchmark::State& s) {
+  OdometryParams p;
+  p.method = "depth_only";
+  for (auto _ : s) {
+    RgbdOdometry odo(p);
+    odo.processObservation(*geometricPair().obs[0]);
+    benchmark::DoNotOptimize(odo.processObservation(*geometricPair().obs[1]));
+  }
+  s.SetLabel("two frames: reference + one registration");
+}
+
 BENCHMARK(BM_PrepareFrame)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_OrbFeatures)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_MutualMatching)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Msse)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Ransac)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_WholeFrame)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Downsample)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Normals)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Is3d)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Shot)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ShotMatching)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_GeometricMsse)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_PlaneIcp)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_GeometricFrame)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -9,8 +9,9 @@
 using hrgbd::FrameResult;
 
 namespace {
-std::vector<mrpt::obs::CObservation3DRangeScan::Ptr> bundledFrames() {
-  hrgbd::RawlogSource src(std::string(HRGBD_SOURCE_DIR) + "/rawlogs/desk_near.rawlog");
+std::vector<mrpt::obs::CObservation3DRangeScan::Ptr> bundledFrames(
+    const std::string& name = "desk_near") {
+  hrgbd::RawlogSource src(std::string(HRGBD_SOURCE_DIR) + "/rawlogs/" + name + ".rawlog");
   std::vector<mrpt::obs::CObservation3DRangeScan::Ptr> v;
   while (auto o = src.next()) v.push_back(o);
   return v;
@@ -60,8 +61,45 @@ TEST(RgbdOdometry, HoldPolicyKeepsThePoseOfTheLastFrame) {
   EXPECT_EQ(held.pose, good.pose);
 }
 
-TEST(RgbdOdometry, DepthOnlyIsRefusedUntilTheGeometricPathExists) {
+TEST(RgbdOdometry, DepthOnlyAlwaysTakesTheGeometricPath) {
+  const auto frames = bundledFrames();
   hrgbd::OdometryParams p;
   p.method = "depth_only";
-  EXPECT_THROW(hrgbd::RgbdOdometry{p}, std::runtime_error);
+  hrgbd::RgbdOdometry odo(p);
+  const auto first = odo.processObservation(*frames[0]);
+  EXPECT_EQ(first.path, "geometric");
+  EXPECT_EQ(first.orb_features, 0u);  // ORB is not even run
+  EXPECT_GT(first.features, 100u);
+  const auto second = odo.processObservation(*frames[1]);
+  EXPECT_EQ(second.path, "geometric");
+  EXPECT_EQ(second.status, FrameResult::Status::Ok) << second.detail;
+}
+
+TEST(RgbdOdometry, HybridSwitchesPathsOnTheOrbFeatureCount) {
+  hrgbd::OdometryParams p;  // min_orb_features = 50
+  for (const auto& [sequence, path] :
+       {std::pair{"desk_near", "photometric"}, std::pair{"structure_near", "geometric"}}) {
+    const auto frames = bundledFrames(sequence);
+    hrgbd::RgbdOdometry odo(p);
+    for (std::size_t i = 0; i < 4; ++i) {
+      const auto r = odo.processObservation(*frames[i]);
+      EXPECT_EQ(r.path, path) << sequence << " frame " << i << ": " << r.orb_features << " ORB";
+      EXPECT_TRUE(r.registered()) << sequence << " frame " << i << ": " << r.detail;
+      EXPECT_EQ(r.orb_features < 50u, std::string(path) == "geometric");
+    }
+  }
+}
+
+TEST(RgbdOdometry, GeometricFallbackRescuesPhotometricFailures) {
+  const auto frames = bundledFrames("structure_near");
+  hrgbd::OdometryParams p;
+  p.min_orb_features = 0;  // never switch on the count: the plain panels' few ORB matches fail
+  for (const bool fallback : {false, true}) {
+    p.geometric_fallback = fallback;
+    hrgbd::RgbdOdometry odo(p);
+    odo.processObservation(*frames[0]);
+    const auto r = odo.processObservation(*frames[1]);
+    EXPECT_EQ(r.registered(), fallback) << r.detail;
+    EXPECT_EQ(r.path, fallback ? "geometric" : "photometric");
+  }
 }

@@ -36,16 +36,17 @@ struct PlaybackSection {
 };
 
 void writeCsvHeader(std::ostream& out) {
-  out << "timestamp,status,path,features,matches,inliers,scale_m,ms_prepare,ms_features,"
+  out << "timestamp,status,path,orb_features,features,matches,inliers,scale_m,ms_prepare,"
+         "ms_features,"
          "ms_matching,ms_estimation,ms_refine,ms_total,detail\n";
 }
 
 void writeCsvRow(std::ostream& out, const FrameResult& r) {
   out << std::fixed << std::setprecision(6) << r.t << "," << toString(r.status) << "," << r.path
-      << "," << r.features << "," << r.matches << "," << r.inliers << "," << std::setprecision(5)
-      << r.scale << "," << std::setprecision(3) << r.ms_prepare << "," << r.ms_features << ","
-      << r.ms_matching << "," << r.ms_estimation << "," << r.ms_refine << "," << r.ms_total << ",\""
-      << r.detail << "\"\n";
+      << "," << r.orb_features << "," << r.features << "," << r.matches << "," << r.inliers << ","
+      << std::setprecision(5) << r.scale << "," << std::setprecision(3) << r.ms_prepare << ","
+      << r.ms_features << "," << r.ms_matching << "," << r.ms_estimation << "," << r.ms_refine
+      << "," << r.ms_total << ",\"" << r.detail << "\"\n";
   out.flush();
 }
 
@@ -64,7 +65,7 @@ double percentile(std::vector<double> v, double q) {
 }  // namespace
 
 const std::vector<std::string>& knownConfigSections() {
-  static const std::vector<std::string> s{"Playback", "Odometry", "ORB",       "MSSE",
+  static const std::vector<std::string> s{"Playback", "Odometry", "ORB",       "Geometric", "MSSE",
                                           "RANSAC",   "ICP",      "TumSource", "OpenNI2"};
   return s;
 }

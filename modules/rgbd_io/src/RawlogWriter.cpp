@@ -20,7 +20,9 @@ RawlogWriter::RawlogWriter(const std::string& path, ImageStorage images, int com
   if (images != ImageStorage::Inline) {
     // MRPT's convention, found by CRawlog::detectImagesDirectory(): "<stem>_Images/".
     m_images_dir = std::filesystem::path(path).replace_extension().string() + "_Images";
-    if (!mrpt::system::createDirectory(m_images_dir))
+    std::error_code ec;
+    std::filesystem::create_directories(m_images_dir, ec);
+    if (ec || !std::filesystem::is_directory(m_images_dir))
       throw std::runtime_error("cannot create image folder '" + m_images_dir + "'");
   }
 }
