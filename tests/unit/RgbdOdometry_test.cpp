@@ -103,3 +103,22 @@ TEST(RgbdOdometry, GeometricFallbackRescuesPhotometricFailures) {
     EXPECT_EQ(r.path, fallback ? "geometric" : "photometric");
   }
 }
+
+TEST(RgbdOdometry, OpenCvPeersRunOnTheSameFrames) {
+  // The peers of the benchmark (OpenCV contrib's dense odometries) behind the same interface:
+  // frame 0 -> 1 of the bundled desk, compared with our rgb_only estimate of the same step.
+  const auto frames = bundledFrames();
+  hrgbd::OdometryParams p;
+  p.method = "rgb_only";
+  hrgbd::RgbdOdometry ours(p);
+  ours.processObservation(*frames[0]);
+  const auto reference = ours.processObservation(*frames[1]).pose;
+  for (const char* peer : {"opencv_rgbd", "opencv_icp", "opencv_rgbd_icp"}) {
+    p.method = peer;
+    hrgbd::RgbdOdometry odo(p);
+    EXPECT_EQ(odo.processObservation(*frames[0]).path, "dense");
+    const auto r = odo.processObservation(*frames[1]);
+    ASSERT_EQ(r.status, FrameResult::Status::Ok) << peer << ": " << r.detail;
+    EXPECT_LT((r.pose - reference).norm(), 0.01) << peer;  // both within millimetres of truth
+  }
+}

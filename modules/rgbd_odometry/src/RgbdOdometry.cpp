@@ -55,8 +55,12 @@ Method parseMethod(const std::string& name) {
   if (name == "depth_only") return Method::DepthOnly;
   if (name == "ransac") return Method::Ransac;
   if (name == "ransac_icp") return Method::RansacIcp;
+  if (name == "opencv_rgbd") return Method::OpencvRgbd;
+  if (name == "opencv_icp") return Method::OpencvIcp;
+  if (name == "opencv_rgbd_icp") return Method::OpencvRgbdIcp;
   throw ConfigError("[Odometry] method = " + name +
-                    ": must be hybrid, rgb_only, depth_only, ransac or ransac_icp");
+                    ": must be hybrid, rgb_only, depth_only, ransac, ransac_icp, opencv_rgbd, "
+                    "opencv_icp or opencv_rgbd_icp");
 }
 
 const char* toString(Method m) {
@@ -71,6 +75,12 @@ const char* toString(Method m) {
       return "ransac";
     case Method::RansacIcp:
       return "ransac_icp";
+    case Method::OpencvRgbd:
+      return "opencv_rgbd";
+    case Method::OpencvIcp:
+      return "opencv_icp";
+    case Method::OpencvRgbdIcp:
+      return "opencv_rgbd_icp";
   }
   return "?";
 }
@@ -237,6 +247,34 @@ RgbdOdometry::Registration RgbdOdometry::registerGeometric(Keyframe& cur, FrameR
   return {FrameResult::Status::Ok, icp.T, ""};
 }
 
+RgbdOdometry::Registration RgbdOdometry::registerPeer(const Keyframe& cur, FrameResult& r) {
+  r.path = "dense";
+  if (!m_peer) {
+    const auto& c = cur.image.cam;
+    const cv::Mat K = (cv::Mat_<float>(3, 3) << c.fx, 0, c.cx, 0, c.fy, c.cy, 0, 0, 1);
+    if (m_method == Method::OpencvRgbd) m_peer = cv::rgbd::RgbdOdometry::create(K);
+    if (m_method == Method::OpencvIcp) m_peer = cv::rgbd::ICPOdometry::create(K);
+    if (m_method == Method::OpencvRgbdIcp) m_peer = cv::rgbd::RgbdICPOdometry::create(K);
+  }
+  const auto t0 = Clock::now();
+  cv::Mat Rt;  // maps source (current) points into the destination (reference) frame
+  const bool ok = m_peer->compute(cur.image.grey, cur.image.depth, cv::Mat(), m_ref->image.grey,
+                                  m_ref->image.depth, cv::Mat(), Rt);
+  r.ms_estimation += msSince(t0);
+  Registration reg;
+  if (!ok || Rt.empty()) {
+    reg.status = FrameResult::Status::TooFewMatches;
+    reg.detail = std::string(toString(m_method)) + " did not converge";
+    return reg;
+  }
+  cv::Mat Rt64;
+  Rt.convertTo(Rt64, CV_64F);
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) reg.T.matrix()(i, j) = Rt64.at<double>(i, j);
+  reg.status = FrameResult::Status::Ok;
+  return reg;
+}
+
 FrameResult RgbdOdometry::processObservation(const mrpt::obs::CObservation3DRangeScan& obs) {
   const auto t_start = Clock::now();
   FrameResult r;
@@ -256,7 +294,9 @@ FrameResult RgbdOdometry::processObservation(const mrpt::obs::CObservation3DRang
     return done(predict(r, FrameResult::Status::BadInput, e.what()));
   }
   r.ms_prepare = msSince(t0);
-  if (m_method != Method::DepthOnly) {
+  const bool peer = m_method == Method::OpencvRgbd || m_method == Method::OpencvIcp ||
+                    m_method == Method::OpencvRgbdIcp;
+  if (m_method != Method::DepthOnly && !peer) {
     t0 = Clock::now();
     cur.orb = extractOrbFeatures(cur.image, m_params.orb);
     r.orb_features = r.features = cur.orb.size();
@@ -268,13 +308,16 @@ FrameResult RgbdOdometry::processObservation(const mrpt::obs::CObservation3DRang
                          (m_method == Method::Hybrid &&
                           r.orb_features < static_cast<std::size_t>(m_params.min_orb_features));
   if (!m_ref) {
+    if (peer) r.path = "dense";
     if (geometric) r.features = geometricFeatures(cur, r).features.size(), r.path = "geometric";
     cur.pose = m_pose;
     m_ref = std::move(cur);
     r.pose = m_pose;
     return done(r);
   }
-  auto reg = geometric ? registerGeometric(cur, r) : registerPhotometric(cur, r);
+  auto reg = peer        ? registerPeer(cur, r)
+             : geometric ? registerGeometric(cur, r)
+                         : registerPhotometric(cur, r);
   if (reg.status != FrameResult::Status::Ok && !geometric && m_method == Method::Hybrid &&
       m_params.geometric_fallback)
     reg = registerGeometric(cur, r);

@@ -6,6 +6,7 @@
 #include <mrpt/obs/CObservation3DRangeScan.h>
 #include <mrpt/poses/CPose3D.h>
 
+#include <opencv2/rgbd.hpp>
 #include <optional>
 #include <string>
 
@@ -24,8 +25,13 @@ enum class Method {
   DepthOnly,  //!< geometric (IS3D + SHOT) + MSSE always
   Ransac,     //!< ORB + RANSAC
   RansacIcp,  //!< ORB + RANSAC, refined by ICP on ~15,000 points
+  // Peers: OpenCV contrib's dense frame-to-frame odometries, fed the same prepared frames
+  OpencvRgbd,     //!< cv::rgbd::RgbdOdometry (photometric, dense)
+  OpencvIcp,      //!< cv::rgbd::ICPOdometry (point-to-plane on the depth)
+  OpencvRgbdIcp,  //!< cv::rgbd::RgbdICPOdometry (both)
 };
-Method parseMethod(const std::string& name);  //!< hybrid|rgb_only|depth_only|ransac|ransac_icp
+/** hybrid|rgb_only|depth_only|ransac|ransac_icp|opencv_rgbd|opencv_icp|opencv_rgbd_icp */
+Method parseMethod(const std::string& name);
 const char* toString(Method m);
 
 /** What to do with the pose of a frame that cannot be registered. */
@@ -77,7 +83,7 @@ struct FrameResult {
   mrpt::poses::CPose3D pose;
   Status status = Status::FirstFrame;
   std::string detail;                //!< human-readable reason when not Ok
-  std::string path = "photometric";  //!< photometric|geometric|none (path of the estimate)
+  std::string path = "photometric";  //!< photometric|geometric|dense (peers)|none
   std::size_t orb_features = 0;      //!< ORB features with depth (what the switch counts)
   std::size_t features = 0, matches = 0, inliers = 0;  //!< on the path used
   double scale = 0;                                    //!< [m] estimator noise scale
@@ -113,15 +119,17 @@ class RgbdOdometry {
   };
   Registration registerPhotometric(Keyframe& cur, FrameResult& r);
   Registration registerGeometric(Keyframe& cur, FrameResult& r);
+  Registration registerPeer(const Keyframe& cur, FrameResult& r);
   const GeometricFeatures& geometricFeatures(Keyframe& k, FrameResult& r);
   FrameResult predict(FrameResult r, FrameResult::Status why, std::string detail);
 
   OdometryParams m_params;
   Method m_method;
   FailurePolicy m_policy;
-  std::optional<Keyframe> m_ref;    // last registered frame
-  mrpt::poses::CPose3D m_pose;      // pose of the latest frame
-  mrpt::poses::CPose3D m_velocity;  // last registered per-frame motion
+  std::optional<Keyframe> m_ref;       // last registered frame
+  cv::Ptr<cv::rgbd::Odometry> m_peer;  // OpenCV peer, made on its first frame (needs K)
+  mrpt::poses::CPose3D m_pose;         // pose of the latest frame
+  mrpt::poses::CPose3D m_velocity;     // last registered per-frame motion
 };
 
 }  // namespace hrgbd
