@@ -73,16 +73,19 @@ void BM_Msse(benchmark::State& s) {
 void BM_Ransac(benchmark::State& s) {  // the baseline estimator, same data, same process
   for (auto _ : s) benchmark::DoNotOptimize(estimateRansac(pair().corr, RansacParams()));
 }
-void BM_WholeFrame(benchmark::State& s) {
+// A fresh odometry on frame 0 (the reference), then the registration of frame 1.
+void twoFrames(benchmark::State& s, const char* method,
+               const mrpt::obs::CObservation3DRangeScan::Ptr (&obs)[2]) {
   OdometryParams p;
-  p.method = "rgb_only";
+  p.method = method;
   for (auto _ : s) {
     RgbdOdometry odo(p);
-    odo.processObservation(*pair().obs[0]);
-    benchmark::DoNotOptimize(odo.processObservation(*pair().obs[1]));
+    odo.processObservation(*obs[0]);
+    benchmark::DoNotOptimize(odo.processObservation(*obs[1]));
   }
   s.SetLabel("two frames: reference + one registration");
 }
+void BM_WholeFrame(benchmark::State& s) { twoFrames(s, "rgb_only", pair().obs); }
 
 // Geometric path (paper III-C to III-G) on two frames of the plain zig-zag.
 struct GeometricPair {
@@ -161,16 +164,7 @@ void BM_PlaneIcp(benchmark::State& s) {
                                                 geometricPair().T, 10, 0.05));
   }
 }
-void BM_GeometricFrame(benchmark::State& s) {
-  OdometryParams p;
-  p.method = "depth_only";
-  for (auto _ : s) {
-    RgbdOdometry odo(p);
-    odo.processObservation(*geometricPair().obs[0]);
-    benchmark::DoNotOptimize(odo.processObservation(*geometricPair().obs[1]));
-  }
-  s.SetLabel("two frames: reference + one registration");
-}
+void BM_GeometricFrame(benchmark::State& s) { twoFrames(s, "depth_only", geometricPair().obs); }
 
 BENCHMARK(BM_PrepareFrame)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_OrbFeatures)->Unit(benchmark::kMillisecond);

@@ -1,18 +1,11 @@
 #include "rgbd_odometry/GeometricFeatures.h"
 
-#include <chrono>
-
+#include "Stopwatch.h"
 #include "rgbd_odometry/Is3dSampling.h"
 #include "rgbd_odometry/PointCloud.h"
 #include "rgbd_odometry/ShotDescriptor.h"
 
 namespace hrgbd {
-namespace {
-using Clock = std::chrono::steady_clock;
-double msSince(Clock::time_point t0) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-}
-}  // namespace
 
 GeometricFeatures extractGeometricFeatures(const RgbdImage& image, const GeometricParams& p) {
   GeometricFeatures out;

@@ -10,22 +10,42 @@
 namespace hrgbd {
 namespace {
 
+// Every s-th depth pixel back-projected (eqs. 1-2), row by row; z = 0 where the depth is
+// missing or beyond max_depth.
+struct Grid {
+  int rows = 0, cols = 0;
+  std::vector<Eigen::Vector3d> p;
+  const Eigen::Vector3d& at(int r, int c) const { return p[std::size_t(r) * cols + c]; }
+};
+
+Grid backProjectGrid(const RgbdImage& im, int s, float max_depth) {
+  Grid g;
+  g.rows = (im.depth.rows + s - 1) / s;
+  g.cols = (im.depth.cols + s - 1) / s;
+  g.p.assign(std::size_t(g.rows) * g.cols, Eigen::Vector3d::Zero());
+  for (int r = 0; r < g.rows; ++r)
+    for (int c = 0; c < g.cols; ++c) {
+      const float z = im.depth.at<float>(r * s, c * s);
+      if (z > 0 && z <= max_depth)
+        g.p[std::size_t(r) * g.cols + c] = im.cam.backProject(c * s, r * s, z);
+    }
+  return g;
+}
+
 // Mean distance between grid-neighbouring points on the same surface (a depth jump larger than
 // four pixel footprints is a discontinuity, not a neighbour).
-double meanGridSpacing(const cv::Mat& depth, const PinholeCamera& cam, int s, float max_depth) {
+double meanGridSpacing(const Grid& g, int s, double fx) {
   double sum = 0;
   std::size_t n = 0;
-  for (int v = 0; v + s < depth.rows; v += s)
-    for (int u = 0; u + s < depth.cols; u += s) {
-      const float z = depth.at<float>(v, u);
-      if (!(z > 0 && z <= max_depth)) continue;
-      const Eigen::Vector3d p = cam.backProject(u, v, z);
-      double best = 4.0 * s * z / cam.fx;
+  for (int r = 0; r + 1 < g.rows; ++r)
+    for (int c = 0; c + 1 < g.cols; ++c) {
+      const Eigen::Vector3d& p = g.at(r, c);
+      if (p.z() == 0) continue;
+      double best = 4.0 * s * p.z() / fx;
       bool found = false;
-      for (const auto& [du, dv] : {std::pair{s, 0}, std::pair{0, s}}) {
-        const float zn = depth.at<float>(v + dv, u + du);
-        if (!(zn > 0 && zn <= max_depth)) continue;
-        const double d = (cam.backProject(u + du, v + dv, zn) - p).norm();
+      for (const Eigen::Vector3d* q : {&g.at(r, c + 1), &g.at(r + 1, c)}) {
+        if (q->z() == 0) continue;
+        const double d = (*q - p).norm();
         if (d < best) best = d, found = true;
       }
       if (found) sum += best, ++n;
@@ -79,17 +99,13 @@ using KdTree =
 
 DownsampledCloud downsampleDepth(const RgbdImage& image, const GeometricParams& p) {
   DownsampledCloud out;
-  const int s = p.pixel_stride;
-  const auto max_depth = static_cast<float>(p.max_depth);
+  const Grid grid = backProjectGrid(image, p.pixel_stride, static_cast<float>(p.max_depth));
   Points pts;
-  pts.reserve(static_cast<std::size_t>(image.depth.total()) / (s * s) + 1);
-  for (int v = 0; v < image.depth.rows; v += s)
-    for (int u = 0; u < image.depth.cols; u += s) {
-      const float z = image.depth.at<float>(v, u);
-      if (z > 0 && z <= max_depth) pts.push_back(image.cam.backProject(u, v, z).cast<float>());
-    }
+  pts.reserve(grid.p.size());
+  for (const auto& q : grid.p)
+    if (q.z() != 0) pts.push_back(q.cast<float>());
   out.input_points = pts.size();
-  out.mean_spacing = meanGridSpacing(image.depth, image.cam, s, max_depth);
+  out.mean_spacing = meanGridSpacing(grid, p.pixel_stride, image.cam.fx);
   if (pts.empty() || out.mean_spacing <= 0) return out;
 
   const double target = p.target_points;

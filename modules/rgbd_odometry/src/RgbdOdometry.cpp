@@ -1,19 +1,15 @@
 #include "rgbd_odometry/RgbdOdometry.h"
 
-#include <chrono>
 #include <cmath>
+#include <opencv2/core/eigen.hpp>
 
+#include "Stopwatch.h"
 #include "rgbd_io/Config.h"
 #include "rgbd_odometry/DescriptorMatching.h"
 #include "rgbd_odometry/PlaneIcp.h"
 
 namespace hrgbd {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-double msSince(Clock::time_point t0) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-}
 
 double rotationDeg(const Eigen::Isometry3d& T) {
   return mrpt::RAD2DEG(Eigen::AngleAxisd(T.rotation()).angle());
@@ -146,7 +142,9 @@ void OdometryParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
 
 void OdometryParams::saveToConfigFile(mrpt::config::CConfigFileBase& c,
                                       const std::string& s) const {
-  MRPT_SAVE_CONFIG_VAR_COMMENT(method, "hybrid|rgb_only|depth_only|ransac|ransac_icp");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(method,
+                               "hybrid|rgb_only|depth_only|ransac|ransac_icp|opencv_rgbd|"
+                               "opencv_icp|opencv_rgbd_icp");
   MRPT_SAVE_CONFIG_VAR_COMMENT(min_orb_features, "[count] fewer ORB features: geometric path");
   MRPT_SAVE_CONFIG_VAR_COMMENT(geometric_fallback, "hybrid: photometric failure -> geometric");
   MRPT_SAVE_CONFIG_VAR_COMMENT(geometric_k_fraction, "k' of MSSE on SHOT matches");
@@ -267,10 +265,7 @@ RgbdOdometry::Registration RgbdOdometry::registerPeer(const Keyframe& cur, Frame
     reg.detail = std::string(toString(m_method)) + " did not converge";
     return reg;
   }
-  cv::Mat Rt64;
-  Rt.convertTo(Rt64, CV_64F);
-  for (int i = 0; i < 4; ++i)
-    for (int j = 0; j < 4; ++j) reg.T.matrix()(i, j) = Rt64.at<double>(i, j);
+  cv::cv2eigen(Rt, reg.T.matrix());
   reg.status = FrameResult::Status::Ok;
   return reg;
 }
