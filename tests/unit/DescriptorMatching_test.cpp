@@ -38,3 +38,32 @@ TEST(DescriptorMatching, FloatDescriptorsWithL2) {
   EXPECT_EQ(r.matches[0].target, 1);
   EXPECT_EQ(r.matches[1].target, 0);
 }
+
+TEST(DescriptorMatching, HandWrittenHammingAgreesWithOpenCv) {
+  // 32-byte descriptors as ORB's, few distinct bytes so that ties are frequent. The reference is
+  // OpenCV's distance matrix with the same first-index rule on ties.
+  cv::RNG rng(7);
+  cv::Mat src(300, 32, CV_8U), tgt(280, 32, CV_8U);
+  rng.fill(src, cv::RNG::UNIFORM, 0, 4);
+  rng.fill(tgt, cv::RNG::UNIFORM, 0, 4);
+  cv::Mat dist;
+  cv::batchDistance(src, tgt, dist, CV_32S, cv::noArray(), cv::NORM_HAMMING, 0);
+  std::vector<std::pair<int, int>> expected;
+  for (int i = 0; i < dist.rows; ++i) {
+    int bj = 0;
+    for (int j = 1; j < dist.cols; ++j)
+      if (dist.at<int>(i, j) < dist.at<int>(i, bj)) bj = j;
+    int bi = 0;
+    for (int k = 1; k < dist.rows; ++k)
+      if (dist.at<int>(k, bj) < dist.at<int>(bi, bj)) bi = k;
+    if (bi == i && dist.at<int>(i, bj) <= 40) expected.emplace_back(i, bj);
+  }
+  const auto r = hrgbd::matchMutual(src, tgt, cv::NORM_HAMMING, 40);
+  ASSERT_GT(expected.size(), 10u);
+  ASSERT_EQ(r.matches.size(), expected.size());
+  for (std::size_t m = 0; m < expected.size(); ++m) {
+    EXPECT_EQ(r.matches[m].source, expected[m].first);
+    EXPECT_EQ(r.matches[m].target, expected[m].second);
+    EXPECT_FLOAT_EQ(r.matches[m].distance, dist.at<int>(expected[m].first, expected[m].second));
+  }
+}

@@ -9,6 +9,7 @@
 #include <iomanip>
 #include <iostream>
 
+#include "MapOutputs.h"
 #include "rgbd_eval/EvalPlot.h"
 #include "rgbd_eval/Evaluate.h"
 #include "rgbd_io/Config.h"
@@ -22,8 +23,11 @@ namespace {
 // the INI file's folder.
 struct PlaybackSection {
   std::string input, trajectory = "trajectory.txt", csv;
+  MapOutputPaths outputs;
   void load(const mrpt::config::CConfigFileBase& c, const std::string& base) {
-    rejectUnknownKeys(c, "Playback", {"input", "trajectory", "csv"});
+    rejectUnknownKeys(
+        c, "Playback",
+        {"input", "trajectory", "csv", "output_rawlog", "simplemap", "map_ply", "map_scene"});
     auto path = [&](const std::string& key, const std::string& def) {
       const auto v = c.read_string("Playback", key, def);
       if (v.empty() || v == "openni2" || std::filesystem::path(v).is_absolute()) return v;
@@ -32,6 +36,8 @@ struct PlaybackSection {
     input = path("input", "");
     trajectory = c.keyExists("Playback", "trajectory") ? path("trajectory", "") : trajectory;
     csv = path("csv", "");
+    outputs = {path("output_rawlog", ""), path("simplemap", ""), path("map_ply", ""),
+               path("map_scene", "")};
   }
 };
 
@@ -55,18 +61,12 @@ void progressBar(std::ostream& err, std::size_t n, std::size_t registered, doubl
       << std::fixed << std::setprecision(1) << std::setw(6) << ms << " ms/frame" << std::flush;
 }
 
-double percentile(std::vector<double> v, double q) {
-  if (v.empty()) return 0;
-  const auto k = static_cast<std::size_t>(q * (v.size() - 1) + 0.5);
-  std::nth_element(v.begin(), v.begin() + k, v.end());
-  return v[k];
-}
-
 }  // namespace
 
 const std::vector<std::string>& knownConfigSections() {
-  static const std::vector<std::string> s{"Playback", "Odometry", "ORB",       "Geometric", "MSSE",
-                                          "RANSAC",   "ICP",      "TumSource", "OpenNI2"};
+  static const std::vector<std::string> s{"Playback", "Odometry",  "ORB", "Geometric",
+                                          "MSSE",     "RANSAC",    "ICP", "TumSource",
+                                          "OpenNI2",  "Benchmark", "Map"};
   return s;
 }
 
@@ -79,14 +79,12 @@ void rejectUnknownSections(const mrpt::config::CConfigFileBase& cfg) {
       throw ConfigError("unknown INI section [" + s + "]");
 }
 
-namespace {
 std::unique_ptr<mrpt::config::CConfigFileBase> loadChecked(const std::string& file) {
   std::unique_ptr<mrpt::config::CConfigFileBase> cfg =
       file.empty() ? std::make_unique<mrpt::config::CConfigFileMemory>() : loadIniFile(file);
   rejectUnknownSections(*cfg);
   return cfg;
 }
-}  // namespace
 
 std::string effectiveConfig(const std::string& config_file) {
   const auto cfg = loadChecked(config_file);
@@ -95,9 +93,13 @@ std::string effectiveConfig(const std::string& config_file) {
   TumSourceParams tum;
   tum.loadFromConfigFile(*cfg, "TumSource");
   mrpt::config::CConfigFileMemory out;
-  for (const auto& key : {"input", "trajectory", "csv"})
+  for (const auto& key :
+       {"input", "trajectory", "csv", "output_rawlog", "simplemap", "map_ply", "map_scene"})
     out.write("Playback", key, cfg->read_string("Playback", key, ""));
   odo.saveToConfigFile(out, "Odometry");
+  MapParams map;
+  map.loadFromConfigFile(*cfg, "Map");
+  map.saveToConfigFile(out, "Map");
   tum.saveToConfigFile(out, "TumSource");
   return out.getContent();
 }
@@ -107,6 +109,7 @@ PlaybackSummary runPlayback(const PlaybackOptions& opt, std::ostream& log) {
   PlaybackSection pb;
   pb.load(*cfg,
           opt.config.empty() ? "." : std::filesystem::path(opt.config).parent_path().string());
+  if (!opt.ini_outputs) pb.csv.clear(), pb.outputs = {};
   OdometryParams params;
   params.loadFromConfigFile(*cfg, "Odometry");
   if (!opt.method.empty()) params.method = opt.method;
@@ -130,14 +133,26 @@ PlaybackSummary runPlayback(const PlaybackOptions& opt, std::ostream& log) {
     writeCsvHeader(csv);
   }
 
+  auto pick = [](const std::string& cli, const std::string& ini) {
+    return cli.empty() ? ini : cli;
+  };
+  MapParams map_params;
+  map_params.loadFromConfigFile(*cfg, "Map");
+  MapOutputs outputs(
+      {pick(opt.output_rawlog, pb.outputs.output_rawlog), pick(opt.simplemap, pb.outputs.simplemap),
+       pick(opt.map_ply, pb.outputs.map_ply), pick(opt.map_scene, pb.outputs.map_scene)},
+      map_params);
+
   PlaybackSummary sum;
   Trajectory estimate;
   const bool bar = opt.progress && isatty(STDERR_FILENO);
   while (auto obs = source->next()) {
-    const auto r = odometry.processObservation(*obs);
+    auto r = odometry.processObservation(*obs);
+    r.inlier_points.clear();  // display only; a long run keeps just the figures
     writeTumLine(traj, {r.t, r.pose});
     traj.flush();
     if (csv.is_open()) writeCsvRow(csv, r);
+    outputs.add(*obs, r);
     estimate.push_back({r.t, r.pose});
     sum.registered += r.registered();
     sum.results.push_back(r);
@@ -155,12 +170,14 @@ PlaybackSummary runPlayback(const PlaybackOptions& opt, std::ostream& log) {
       << "time per frame: median " << std::fixed << std::setprecision(1) << sum.median_ms
       << " ms, 95th percentile " << sum.p95_ms << " ms\n"
       << "trajectory: " << traj_path << "\n";
+  sum.map_points = outputs.finish(log);
 
   const auto gt = source->groundTruth();
   if (!gt.empty() && estimate.size() >= 3) {
     try {
       const auto e = evaluateTrajectory(gt, estimate);
       sum.evaluated = true;
+      sum.eval = e;
       sum.eval_text = toText(e);
       sum.eval_json = toJson(e);
       log << "evaluation against ground truth:\n" << sum.eval_text;

@@ -4,6 +4,7 @@
 #include <mrpt/poses/CPose3DQuat.h>
 #include <mrpt/tfest/se3.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -124,6 +125,13 @@ std::string toText(const EvalResult& r) {
                 r.pairs, r.ate_rmse, r.ate_mean_unaligned, r.rpe_trans, r.rpe_delta_used,
                 r.rpe_pairs, r.rpe_rot);
   return buf;
+}
+
+double percentile(std::vector<double> v, double q) {
+  if (v.empty()) return 0;
+  const auto k = static_cast<std::size_t>(q * (v.size() - 1) + 0.5);
+  std::nth_element(v.begin(), v.begin() + k, v.end());
+  return v[k];
 }
 
 }  // namespace hrgbd

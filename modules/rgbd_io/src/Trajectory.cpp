@@ -66,4 +66,12 @@ mrpt::poses::CPose3D mrptToOptical(const mrpt::poses::CPose3D& mrpt_pose) {
   return mrpt_pose + (-mrptFrameInOptical());  // a (+) b^-1; note MRPT a - b = b^-1 (+) a
 }
 
+mrpt::poses::CPose3D opticalToMrptWorld(const mrpt::poses::CPose3D& optical_pose) {
+  return (-mrptFrameInOptical()) + opticalToMrpt(optical_pose);
+}
+
+mrpt::poses::CPose3D mrptWorldToOptical(const mrpt::poses::CPose3D& mrpt_world_pose) {
+  return mrptToOptical(mrptFrameInOptical() + mrpt_world_pose);
+}
+
 }  // namespace hrgbd

@@ -43,6 +43,12 @@ Correspondences correspondences(const MatchResult& m, const FeatureSet& source,
   return c;
 }
 
+void keepInlierPoints(const Correspondences& c, const RigidEstimate& est, FrameResult& r) {
+  r.inlier_points.clear();
+  if (!est.ok()) return;
+  for (const auto i : est.inliers) r.inlier_points.push_back(c.source[i].cast<float>());
+}
+
 }  // namespace
 
 Method parseMethod(const std::string& name) {
@@ -173,6 +179,7 @@ void RgbdOdometry::reset() {
 FrameResult RgbdOdometry::predict(FrameResult r, FrameResult::Status why, std::string detail) {
   r.status = why;
   r.detail = std::move(detail);
+  r.inlier_points.clear();
   if (m_policy == FailurePolicy::ConstantVelocity) m_pose = m_pose + m_velocity;
   r.pose = m_pose;
   return r;
@@ -204,6 +211,7 @@ RgbdOdometry::Registration RgbdOdometry::registerPhotometric(Keyframe& cur, Fram
       ransac ? estimateRansac(corr, m_params.ransac) : estimateMsse(corr, m_params.msse);
   r.inliers = est.inliers.size();
   r.scale = est.scale;
+  keepInlierPoints(corr, est, r);
   r.ms_estimation += msSince(t0);
   return {fromEstimate(est.status), est.T, toString(est.status)};
 }
@@ -227,6 +235,7 @@ RgbdOdometry::Registration RgbdOdometry::registerGeometric(Keyframe& cur, FrameR
   const auto est = estimateMsse(corr, msse);
   r.inliers = est.inliers.size();
   r.scale = est.scale;
+  keepInlierPoints(corr, est, r);
   r.ms_estimation += msSince(t0);
   if (!est.ok() || m_params.geometric.refine_iterations == 0)
     return {fromEstimate(est.status), est.T, toString(est.status)};

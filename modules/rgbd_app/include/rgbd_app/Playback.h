@@ -3,9 +3,11 @@
  * The playback application: any FrameSource through RgbdOdometry, with trajectory, per-frame CSV
  * and evaluation against ground truth. `hybrid-rgbd-odometry` is a thin main over runPlayback(). */
 #include <iosfwd>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "rgbd_eval/Evaluate.h"
 #include "rgbd_odometry/RgbdOdometry.h"
 
 namespace hrgbd {
@@ -20,6 +22,12 @@ struct PlaybackOptions {
   std::string plot;        //!< evaluation PNG ("" = none)
   int max_frames = 0;      //!< stop after this many frames (0 = all)
   bool progress = true;    //!< progress bar on stderr
+  // Map and MRPT outputs ("" = from [Playback], where "" = none)
+  std::string output_rawlog;  //!< the frames with their estimated pose as sensorPose
+  std::string simplemap;      //!< CSimpleMap of (pose, frame) for observations2map
+  std::string map_ply;        //!< coloured map, PLY
+  std::string map_scene;      //!< coloured map + camera path, .3Dscene
+  bool ini_outputs = true;    //!< false: only the outputs set here (CSV, map, rawlog) are written
 };
 
 /** Summary of a run. */
@@ -27,8 +35,10 @@ struct PlaybackSummary {
   std::size_t frames = 0, registered = 0;
   std::vector<FrameResult> results;
   bool evaluated = false;
+  EvalResult eval;  //!< valid when evaluated
   std::string eval_text, eval_json;
   double median_ms = 0, p95_ms = 0;
+  std::size_t map_points = 0;  //!< points in the coloured map (when a map output was asked)
 };
 
 /** INI sections this project knows; any other section in a config file is an error. */
@@ -36,6 +46,9 @@ const std::vector<std::string>& knownConfigSections();
 
 /** Throws ConfigError if `cfg` has a section not in knownConfigSections(). */
 void rejectUnknownSections(const mrpt::config::CConfigFileBase& cfg);
+
+/** Loads `file` ("" = built-in defaults) and rejects unknown sections (ConfigError). */
+std::unique_ptr<mrpt::config::CConfigFileBase> loadChecked(const std::string& file);
 
 /** The effective configuration (defaults + `config_file`, "" for defaults) as INI text. */
 std::string effectiveConfig(const std::string& config_file);

@@ -42,4 +42,7 @@ std::string toJson(const EvalResult& r);
 /** Human-readable summary, one figure per line. */
 std::string toText(const EvalResult& r);
 
+/** The q-quantile (0..1, nearest rank) of `v`; 0 for an empty vector. */
+double percentile(std::vector<double> v, double q);
+
 }  // namespace hrgbd

@@ -46,4 +46,12 @@ mrpt::poses::CPose3D opticalToMrpt(const mrpt::poses::CPose3D& optical_pose);
 /** MRPT sensor-convention pose -> optical-frame pose (TUM); inverse of opticalToMrpt(). */
 mrpt::poses::CPose3D mrptToOptical(const mrpt::poses::CPose3D& mrpt_pose);
 
+/** A trajectory pose (optical frame, relative to the first camera's optical frame) -> the
+ * camera's MRPT-convention pose in an MRPT world: the first camera's MRPT frame (x forward,
+ * z up when that camera was level). Maps, frustums and rawlog sensor poses use this world. */
+mrpt::poses::CPose3D opticalToMrptWorld(const mrpt::poses::CPose3D& optical_pose);
+
+/** Inverse of opticalToMrptWorld(). */
+mrpt::poses::CPose3D mrptWorldToOptical(const mrpt::poses::CPose3D& mrpt_world_pose);
+
 }  // namespace hrgbd

@@ -87,6 +87,8 @@ struct FrameResult {
   std::size_t orb_features = 0;      //!< ORB features with depth (what the switch counts)
   std::size_t features = 0, matches = 0, inliers = 0;  //!< on the path used
   double scale = 0;                                    //!< [m] estimator noise scale
+  /** [m] the current frame's inlier features (optical frame), for display; empty on failure */
+  std::vector<Eigen::Vector3f> inlier_points;
   // [ms] per stage
   double ms_prepare = 0, ms_features = 0, ms_matching = 0, ms_estimation = 0, ms_refine = 0,
          ms_total = 0;

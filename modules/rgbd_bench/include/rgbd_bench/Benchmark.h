@@ -1,0 +1,80 @@
+#pragma once
+/** \file Benchmark.h
+ * Sequences x methods, as the paper's Tables I-III: every method of RgbdOdometry (ours, the
+ * paper's baselines and the OpenCV contrib peers) runs through the same playback on the same
+ * frames; the report gives ATE (unaligned mean, the paper's metric, and aligned RMSE), RPE,
+ * time per frame, path shares and failures as markdown. `rgbd-benchmark` is a thin main. */
+#include <mrpt/config/CLoadableOptions.h>
+
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+#include "rgbd_app/Playback.h"
+
+namespace hrgbd {
+
+/** INI section [Benchmark]. Lists are separated by spaces; paths are relative to the INI. */
+struct BenchmarkParams : public mrpt::config::CLoadableOptions {
+  std::vector<std::string> methods{"hybrid",     "rgb_only",    "depth_only", "ransac",
+                                   "ransac_icp", "opencv_rgbd", "opencv_icp", "opencv_rgbd_icp"};
+  /** Simulated suite: these scene types (rgbd_sim::sceneTypes()), each near (~1 m) ... */
+  std::vector<std::string> sim_scenes{"texture", "structure", "structure_texture", "desk", "wall"};
+  /** ... and also far (~2 m) for texture, structure and structure_texture, as in Table I. */
+  bool sim_far = true;
+  /** "sweep" and/or TUM ground-truth files whose real hand-held motion is replayed. */
+  std::vector<std::string> sim_motions{"sweep"};
+  int sim_frames = 30;  //!< [count] frames per simulated sequence (30 Hz)
+  int sim_seed = 1;     //!< simulator noise seed
+  /** Real sequences: TUM folders or rawlogs with ground truth. Missing ones are reported and
+   * skipped (../shared/data is not on every machine). */
+  std::vector<std::string> real_sequences;
+  int max_frames = 0;                            //!< [count] per run, 0 = all
+  std::string cache_folder = "benchmark_cache";  //!< rendered simulated sequences (reused)
+  std::string output_folder = "benchmark";       //!< results.md, results.csv, trajectories
+
+  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
+  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+};
+
+/** One sequence of the suite. */
+struct BenchSequence {
+  std::string name;         //!< e.g. "sim/structure_near/sweep", "real/tum_fr1_desk_9frames"
+  std::string input;        //!< rawlog or TUM folder
+  std::string scene_type;   //!< simulated scene type ("" for real sequences)
+  std::string skip_reason;  //!< not empty: the sequence is listed but not run
+};
+
+/** One sequence x method run. */
+struct BenchRun {
+  std::string sequence, method;
+  PlaybackSummary summary;
+  std::string error;  //!< the run threw: what it said
+};
+
+struct BenchmarkReport {
+  std::vector<BenchSequence> sequences;
+  std::vector<std::string> methods;
+  std::vector<BenchRun> runs;
+  std::string config_file, machine, date;
+  double seconds = 0;  //!< wall time of the whole benchmark
+};
+
+/** Renders missing simulated sequences into the cache and resolves the real ones; `extra` are
+ * further sequences (TUM folders or rawlogs) from the command line. */
+std::vector<BenchSequence> prepareSequences(const BenchmarkParams& params,
+                                            const std::vector<std::string>& extra,
+                                            std::ostream& log);
+
+/** Loads [Benchmark] from `config_file` (paths relative to it), prepares the sequences and runs
+ * every method on each with runPlayback(), on one thread. Runs that throw are recorded. */
+BenchmarkReport runBenchmark(const std::string& config_file, const std::vector<std::string>& extra,
+                             std::ostream& log);
+
+/** The report as markdown: one table per metric, timing, paths, failures, targets. */
+std::string toMarkdown(const BenchmarkReport& report);
+
+/** One CSV row per run with every figure. */
+std::string toCsv(const BenchmarkReport& report);
+
+}  // namespace hrgbd

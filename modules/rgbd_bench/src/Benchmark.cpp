@@ -1,0 +1,234 @@
+#include "rgbd_bench/Benchmark.h"
+
+#include <sys/utsname.h>
+
+#include <chrono>
+#include <cmath>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <iomanip>
+#include <map>
+#include <opencv2/core.hpp>
+#include <optional>
+#include <sstream>
+#include <thread>
+
+#include "rgbd_io/Config.h"
+#include "rgbd_sim/Scene.h"
+#include "rgbd_sim/Simulator.h"
+
+namespace hrgbd {
+namespace fs = std::filesystem;
+
+namespace {
+
+std::vector<std::string> splitList(const std::string& s) {
+  std::vector<std::string> out;
+  std::istringstream in(s);
+  for (std::string w; in >> w;) out.push_back(w);
+  return out;
+}
+
+std::string joinList(const std::vector<std::string>& v) {
+  std::string s;
+  for (const auto& w : v) s += (s.empty() ? "" : " ") + w;
+  return s;
+}
+
+std::string resolve(const std::string& base, const std::string& p) {
+  if (p.empty() || fs::path(p).is_absolute()) return p;
+  return (fs::path(base) / p).lexically_normal().string();
+}
+
+// "fr1_xyz_groundtruth_per_rgb_frame.txt" -> "fr1_xyz"
+std::string motionName(const std::string& motion) {
+  if (motion == "sweep") return motion;
+  const auto stem = fs::path(motion).stem().string();
+  return stem.substr(0, stem.find("_groundtruth"));
+}
+
+std::string machineDescription() {
+  std::string cpu = "unknown CPU";
+  std::ifstream info("/proc/cpuinfo");
+  for (std::string line; std::getline(info, line);)
+    if (line.rfind("model name", 0) == 0) {
+      cpu = line.substr(line.find(':') + 2);
+      break;
+    }
+  utsname u{};
+  uname(&u);
+  return cpu + ", " + std::to_string(std::thread::hardware_concurrency()) + " cores, " + u.sysname +
+         " " + u.release + " " + u.machine;
+}
+
+std::string today() {
+  const auto t = std::time(nullptr);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%d %H:%M", std::localtime(&t));
+  return buf;
+}
+
+}  // namespace
+
+void BenchmarkParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
+                                         const std::string& s) {
+  rejectUnknownKeys(c, s,
+                    {"methods", "sim_scenes", "sim_far", "sim_motions", "sim_frames", "sim_seed",
+                     "real_sequences", "max_frames", "cache_folder", "output_folder"});
+  auto list = [&](const char* key, std::vector<std::string>& v) {
+    if (c.keyExists(s, key)) v = splitList(c.read_string(s, key, ""));
+  };
+  list("methods", methods);
+  list("sim_scenes", sim_scenes);
+  list("sim_motions", sim_motions);
+  list("real_sequences", real_sequences);
+  MRPT_LOAD_CONFIG_VAR_CS(sim_far, bool);
+  MRPT_LOAD_CONFIG_VAR_CS(sim_frames, int);
+  MRPT_LOAD_CONFIG_VAR_CS(sim_seed, int);
+  MRPT_LOAD_CONFIG_VAR_CS(max_frames, int);
+  MRPT_LOAD_CONFIG_VAR_CS(cache_folder, string);
+  MRPT_LOAD_CONFIG_VAR_CS(output_folder, string);
+  for (const auto& m : methods) parseMethod(m);  // throws naming the bad method
+  const auto& types = sim::sceneTypes();
+  for (const auto& t : sim_scenes)
+    if (std::find(types.begin(), types.end(), t) == types.end())
+      throw ConfigError("[" + s + "] sim_scenes: unknown scene type '" + t + "'");
+  requireValid(sim_frames >= 3, s, "sim_frames", sim_frames, "must be >= 3 (ATE needs 3 poses)");
+  requireValid(max_frames >= 0, s, "max_frames", max_frames, "must be >= 0 (0 = all)");
+  if (methods.empty()) throw ConfigError("[" + s + "] methods: the list is empty");
+}
+
+void BenchmarkParams::saveToConfigFile(mrpt::config::CConfigFileBase& c,
+                                       const std::string& s) const {
+  c.write(s, "methods", joinList(methods));
+  c.write(s, "sim_scenes", joinList(sim_scenes));
+  MRPT_SAVE_CONFIG_VAR_COMMENT(sim_far, "also far (~2 m) texture, structure, structure_texture");
+  c.write(s, "sim_motions", joinList(sim_motions));
+  MRPT_SAVE_CONFIG_VAR_COMMENT(sim_frames, "[count] frames per simulated sequence");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(sim_seed, "simulator noise seed");
+  c.write(s, "real_sequences", joinList(real_sequences));
+  MRPT_SAVE_CONFIG_VAR_COMMENT(max_frames, "[count] per run, 0 = all");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(cache_folder, "rendered simulated sequences");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(output_folder, "results.md, results.csv, trajectories");
+}
+
+std::vector<BenchSequence> prepareSequences(const BenchmarkParams& p,
+                                            const std::vector<std::string>& extra,
+                                            std::ostream& log) {
+  std::vector<BenchSequence> out;
+  fs::create_directories(p.cache_folder);
+  for (const auto& scene : p.sim_scenes) {
+    const bool has_far =
+        p.sim_far && (scene == "texture" || scene == "structure" || scene == "structure_texture");
+    for (const bool far : {false, true}) {
+      if (far && !has_far) continue;
+      for (const auto& motion : p.sim_motions) {
+        const auto variant = scene + (far ? "_far" : "_near");
+        BenchSequence seq{"sim/" + variant + "/" + motionName(motion), "", scene, ""};
+        seq.input = (fs::path(p.cache_folder) /
+                     (variant + "_" + motionName(motion) + "_n" + std::to_string(p.sim_frames) +
+                      "_s" + std::to_string(p.sim_seed) + ".rawlog"))
+                        .string();
+        if (motion != "sweep" && !fs::exists(motion)) {
+          seq.skip_reason = "motion file not found: " + motion;
+        } else if (!fs::exists(seq.input)) {
+          sim::SimParams sp;
+          sp.scene = scene;
+          sp.far = far;
+          sp.frames = p.sim_frames;
+          sp.seed = p.sim_seed;
+          sp.motion = motion;
+          const auto r = sim::simulate(sp, {seq.input, "", ImageStorage::ExternalJpeg});
+          log << "rendered " << seq.name << ": " << r.frames << " frames, " << std::fixed
+              << std::setprecision(1) << 1000.0 / r.ms_per_frame << " frames/s\n";
+        }
+        out.push_back(seq);
+      }
+    }
+  }
+  auto addReal = [&](const std::string& prefix, const std::string& path) {
+    BenchSequence seq{prefix + fs::path(path).filename().replace_extension().string(), path, "",
+                      ""};
+    if (!fs::exists(path)) seq.skip_reason = "not found: " + path;
+    out.push_back(seq);
+  };
+  for (const auto& r : p.real_sequences) addReal("real/", r);
+  for (const auto& e : extra) addReal("given/", e);
+  return out;
+}
+
+BenchmarkReport runBenchmark(const std::string& config_file, const std::vector<std::string>& extra,
+                             std::ostream& log) {
+  const auto start = std::chrono::steady_clock::now();
+  const auto cfg = loadIniFile(config_file);
+  rejectUnknownSections(*cfg);
+  BenchmarkParams p;
+  p.loadFromConfigFile(*cfg, "Benchmark");
+  const auto base = fs::path(config_file).parent_path().string();
+  p.cache_folder = resolve(base, p.cache_folder);
+  p.output_folder = resolve(base, p.output_folder);
+  for (auto& m : p.sim_motions)
+    if (m != "sweep") m = resolve(base, m);
+  for (auto& r : p.real_sequences) r = resolve(base, r);
+
+  BenchmarkReport report;
+  report.config_file = config_file;
+  report.methods = p.methods;
+  report.machine = machineDescription();
+  report.date = today();
+  report.sequences = prepareSequences(p, extra, log);
+
+  // Every method on one core, as the targets are stated (OpenCV would use both otherwise).
+  const int threads = cv::getNumThreads();
+  cv::setNumThreads(1);
+  const auto traj_dir = fs::path(p.output_folder) / "trajectories";
+  fs::create_directories(traj_dir);
+  for (const auto& seq : report.sequences) {
+    if (!seq.skip_reason.empty()) {
+      log << seq.name << ": skipped (" << seq.skip_reason << ")\n";
+      continue;
+    }
+    for (const auto& method : p.methods) {
+      BenchRun run{seq.name, method, {}, ""};
+      auto stem = seq.name + "__" + method;
+      std::replace(stem.begin(), stem.end(), '/', '_');
+      PlaybackOptions opt;
+      opt.config = config_file;
+      opt.input = seq.input;
+      opt.trajectory = (traj_dir / (stem + ".txt")).string();
+      opt.csv = (traj_dir / (stem + ".csv")).string();
+      opt.method = method;
+      opt.max_frames = p.max_frames;
+      opt.progress = false;
+      opt.ini_outputs = false;
+      std::ostringstream sink;
+      try {
+        run.summary = runPlayback(opt, sink);
+      } catch (const std::exception& e) {
+        run.error = e.what();
+      }
+      log << std::left << std::setw(36) << seq.name << std::setw(16) << method << std::right;
+      if (!run.error.empty())
+        log << "error: " << run.error << "\n";
+      else
+        log << std::setw(4) << run.summary.registered << "/" << std::setw(4) << std::left
+            << run.summary.frames << std::right << " registered, ATE "
+            << (run.summary.evaluated ? std::to_string(run.summary.eval.ate_mean_unaligned) : "-")
+            << " m, " << std::fixed << std::setprecision(1) << run.summary.median_ms
+            << " ms/frame\n";
+      log.flush();
+      report.runs.push_back(std::move(run));
+    }
+  }
+  cv::setNumThreads(threads);
+  report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  std::ofstream(fs::path(p.output_folder) / "results.md") << toMarkdown(report);
+  std::ofstream(fs::path(p.output_folder) / "results.csv") << toCsv(report);
+  log << "results: " << (fs::path(p.output_folder) / "results.md").string() << "\n";
+  return report;
+}
+
+}  // namespace hrgbd

@@ -1,0 +1,41 @@
+#pragma once
+/** \file Grabber.h
+ * A thread that reads a FrameSource ahead of the odometry, as a sensor driver would. */
+#include <condition_variable>
+#include <deque>
+#include <exception>
+#include <memory>
+#include <mutex>
+#include <thread>
+
+#include "rgbd_io/FrameSource.h"
+
+namespace hrgbd {
+
+/** Reads frames on its own thread into a queue of two. A live source (sensor) never waits:
+ * when the consumer is behind, the oldest queued frame is dropped (and counted). A recorded
+ * source waits for the consumer (no frame lost) and, with `rate` > 0, is paced at `rate` times
+ * its recorded time stamps; `rate` = 0 reads as fast as the consumer takes them. */
+class Grabber {
+ public:
+  Grabber(std::unique_ptr<FrameSource> source, bool live, double rate);
+  ~Grabber();
+  /** The next frame, nullptr at the end of the data. Rethrows the source's error. */
+  mrpt::obs::CObservation3DRangeScan::Ptr pop();
+  std::size_t dropped() const;
+
+ private:
+  void run();
+  std::unique_ptr<FrameSource> m_source;
+  bool m_live;
+  double m_rate;
+  mutable std::mutex m_mutex;
+  std::condition_variable m_changed;
+  std::deque<mrpt::obs::CObservation3DRangeScan::Ptr> m_queue;
+  bool m_ended = false, m_stop = false;
+  std::exception_ptr m_error;
+  std::size_t m_dropped = 0;
+  std::thread m_thread;  // last: starts after the members it uses
+};
+
+}  // namespace hrgbd

@@ -1,0 +1,60 @@
+#pragma once
+/** \file ColouredMap.h
+ * The coloured 3D map: registered frames back-projected with their global pose into MRPT's
+ * CColouredPointsMap, decimated to one point per voxel so memory is bounded by the volume seen,
+ * not by the number of frames. Exports to PLY (MeshLab, CloudCompare) and .3Dscene
+ * (SceneViewer3D). Coordinates: the MRPT world of opticalToMrptWorld() (z up). */
+#include <mrpt/config/CLoadableOptions.h>
+#include <mrpt/maps/CColouredPointsMap.h>
+#include <mrpt/obs/CObservation3DRangeScan.h>
+#include <mrpt/opengl/CSetOfObjects.h>
+#include <mrpt/poses/CPose3D.h>
+
+#include <cstdint>
+#include <string>
+#include <unordered_set>
+#include <vector>
+
+namespace hrgbd {
+
+/** Parameters of ColouredMap. INI section [Map]. */
+struct MapParams : public mrpt::config::CLoadableOptions {
+  double voxel_size = 0.02;  //!< [m] one point per cubic voxel of this side
+  int pixel_stride = 2;      //!< [px] every n-th pixel in u and v is inserted
+  double min_depth = 0.3;    //!< [m] nearer pixels are not inserted
+  double max_depth = 4.0;    //!< [m] farther pixels are not inserted (Kinect noise grows as z^2)
+
+  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
+  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+};
+
+class ColouredMap {
+ public:
+  explicit ColouredMap(const MapParams& params = {});
+  /** Inserts a frame seen from `optical_pose` (trajectory pose, optical frame). The first point
+   * to fall in a voxel keeps it. Returns the number of points added. Throws
+   * std::invalid_argument for a frame without colour or depth (as prepareRgbdImage()). */
+  std::size_t insert(const mrpt::obs::CObservation3DRangeScan& obs,
+                     const mrpt::poses::CPose3D& optical_pose);
+  void clear();
+  std::size_t size() const { return m_points.size(); }
+  const mrpt::maps::CColouredPointsMap& points() const { return m_points; }
+  /** Binary PLY with colour; throws std::runtime_error naming the file on failure. */
+  void savePly(const std::string& path) const;
+
+ private:
+  MapParams m_params;
+  std::unordered_set<std::uint64_t> m_voxels;
+  mrpt::maps::CColouredPointsMap m_points;
+};
+
+/** The camera path as a polyline, and a frustum at each of `frustums` evenly spaced poses
+ * (MRPT world poses, see opticalToMrptWorld()). */
+mrpt::opengl::CSetOfObjects::Ptr trajectoryObject(const std::vector<mrpt::poses::CPose3D>& poses,
+                                                  std::size_t frustums = 10);
+
+/** Saves map + camera path as an MRPT .3Dscene (SceneViewer3D); throws on failure. */
+void saveScene(const ColouredMap& map, const std::vector<mrpt::poses::CPose3D>& poses,
+               const std::string& path);
+
+}  // namespace hrgbd
