@@ -1,5 +1,6 @@
 // The playback's MRPT outputs: rawlog with poses, simplemap, coloured map (PLY) and its memory.
 #include <mrpt/maps/CSimpleMap.h>
+#include <mrpt/obs/CObservation3DRangeScan.h>
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/poses/CPose3DPDF.h>
 
@@ -75,6 +76,11 @@ TEST(MapOutputs, RawlogWithPosesRoundTrip) {
   EXPECT_LT(poseDistance(hrgbd::mrptWorldToOptical(pdf->getMeanVal()), s.results.back().pose),
             1e-6);
   EXPECT_EQ(sf->size(), 1u);
+  // observations2map inserts the stored point cloud, so it must be there.
+  const auto scan = sf->getObservationByClass<mrpt::obs::CObservation3DRangeScan>();
+  ASSERT_TRUE(scan);
+  EXPECT_TRUE(scan->hasPoints3D);
+  EXPECT_GT(scan->points3D_x.size(), 10000u);
 
   // The PLY holds the map, with colour.
   std::ifstream ply(o.map_ply, std::ios::binary);

@@ -1,6 +1,7 @@
 #include "MapOutputs.h"
 
 #include <mrpt/obs/CSensoryFrame.h>
+#include <mrpt/obs/T3DPointsProjectionParams.h>
 #include <mrpt/poses/CPose3DPDFGaussian.h>
 
 #include <ostream>
@@ -32,6 +33,11 @@ void MapOutputs::add(const mrpt::obs::CObservation3DRangeScan& obs, const FrameR
     copy->intensityImage =
         mrpt::img::CImage(obs.intensityImage.asCvMat<cv::Mat>(mrpt::img::DEEP_COPY),
                           mrpt::img::DEEP_COPY);  // inline, not external
+    // MRPT's point maps insert a 3D range scan from its stored point cloud (as
+    // `rawlog-edit --generate-3d-pointclouds` makes it), not from the depth image.
+    mrpt::obs::T3DPointsProjectionParams pp;
+    pp.decimation = 2;
+    copy->unprojectInto(*copy, pp);
     auto sf = mrpt::obs::CSensoryFrame::Create();
     sf->insert(copy);
     m_simplemap.insert(mrpt::poses::CPose3DPDFGaussian::Create(pose), sf);
