@@ -122,3 +122,23 @@ TEST(RgbdOdometry, OpenCvPeersRunOnTheSameFrames) {
     EXPECT_LT((r.pose - reference).norm(), 0.01) << peer;  // both within millimetres of truth
   }
 }
+
+TEST(RgbdOdometry, FewPhotometricInliersHandOverToTheGeometricPath) {
+  // The simulated desk registers photometrically on hundreds of inliers. A threshold above that
+  // makes every frame try the geometric path, which registers the desk too and takes over.
+  const auto frames = bundledFrames("desk_near");
+  for (const int threshold : {0, 100000}) {
+    hrgbd::OdometryParams p;
+    p.min_photometric_inliers = threshold;
+    hrgbd::RgbdOdometry odo(p);
+    odo.processObservation(*frames[0]);
+    for (std::size_t i = 1; i < 4; ++i) {
+      const auto r = odo.processObservation(*frames[i]);
+      EXPECT_TRUE(r.registered()) << "frame " << i << ": " << r.detail;
+      EXPECT_EQ(r.path, threshold == 0 ? "photometric" : "geometric") << "frame " << i;
+      if (threshold == 0) {
+        EXPECT_GT(r.inliers, 100u);
+      }
+    }
+  }
+}

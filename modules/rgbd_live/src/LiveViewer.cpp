@@ -24,7 +24,7 @@ mrpt::opengl::TFontParams font(const mrpt::img::TColorf& colour) {
 }  // namespace
 
 LiveViewer::LiveViewer(const std::string& title) {
-  if (!std::getenv("DISPLAY"))
+  if (const char* d = std::getenv("DISPLAY"); !d || !*d)
     throw std::runtime_error("no X display: set DISPLAY, or run under xvfb-run");
   m_win = mrpt::gui::CDisplayWindow3D::Create(title, 1024, 720);
   m_win->setCameraElevationDeg(35);
