@@ -1,6 +1,7 @@
 // The default job (config.ini on rawlogs/desk_near.rawlog) with bounds from measurement, and the
 // INI checks the README promises.
 #include <mrpt/config/CConfigFileMemory.h>
+#include <mrpt/obs/CObservationOdometry.h>
 
 #include <filesystem>
 #include <fstream>
@@ -9,6 +10,7 @@
 #include "TestData.h"
 #include "rgbd_app/Playback.h"
 #include "rgbd_io/Config.h"
+#include "rgbd_io/RawlogWriter.h"
 
 TEST(Bundled, DefaultJobTracksTheSimulatedDesk) {
   const auto dir = hrgbd::test::tempDir("bundled");
@@ -78,5 +80,25 @@ TEST(Bundled, UnknownSectionsAndKeysAreRejected) {
     o.progress = false;
     std::ostringstream log;
     EXPECT_THROW(hrgbd::runPlayback(o, log), hrgbd::ConfigError) << ini;
+  }
+}
+
+TEST(Bundled, InputWithoutRgbdFramesIsAClearError) {
+  const auto dir = hrgbd::test::tempDir("bundled_no3d");
+  {
+    hrgbd::RawlogWriter w(dir + "/odo.rawlog");
+    w.write(mrpt::obs::CObservationOdometry());
+  }
+  hrgbd::PlaybackOptions o;
+  o.input = dir + "/odo.rawlog";
+  o.trajectory = dir + "/t.txt";
+  o.progress = false;
+  std::ostringstream log;
+  try {
+    hrgbd::runPlayback(o, log);
+    FAIL() << "a rawlog without RGB-D frames must be an error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("no RGB-D frames"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("odo.rawlog"), std::string::npos) << e.what();
   }
 }

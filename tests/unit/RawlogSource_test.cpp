@@ -120,3 +120,38 @@ TEST(RawlogSource, MrptSampleOpenNI2Frame) {
   EXPECT_GT(mean, 0.3);  // a real indoor scene, metres
   EXPECT_LT(mean, 10.0);
 }
+
+TEST(RawlogSource, CorruptBytesAreAnErrorNamingTheFile) {
+  // The middle of a plain rawlog overwritten with garbage: an exception naming the file, after
+  // the frames before the damage, never a crash or a silent end.
+  const auto dir = hrgbd::test::tempDir("rawlog_corrupt");
+  writeMixedRawlog(dir + "/full.rawlog", hrgbd::ImageStorage::Inline);
+  std::string plain;
+  {
+    mrpt::io::CFileGZInputStream in(dir + "/full.rawlog");
+    char buf[65536];
+    for (size_t n; (n = in.Read(buf, sizeof(buf))) > 0;) plain.append(buf, n);
+  }
+  for (std::size_t i = plain.size() / 2; i < plain.size() / 2 + 64; ++i) plain[i] = char(0xA5);
+  const auto path = dir + "/corrupt.rawlog";
+  std::ofstream(path, std::ios::binary) << plain;
+  hrgbd::RawlogSource src(path);
+  try {
+    while (src.next()) {
+    }
+    FAIL() << "corrupt data must not look like a clean end";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
+  }
+}
+
+TEST(RawlogSource, RawlogWithoutRgbdFramesCountsWhatItSkipped) {
+  const auto dir = hrgbd::test::tempDir("rawlog_no3d");
+  {
+    hrgbd::RawlogWriter w(dir + "/odo.rawlog");
+    for (int i = 0; i < 3; ++i) w.write(mrpt::obs::CObservationOdometry());
+  }
+  hrgbd::RawlogSource src(dir + "/odo.rawlog");
+  EXPECT_EQ(src.next(), nullptr);
+  EXPECT_EQ(src.stats().skipped_objects, 3u);
+}

@@ -142,3 +142,59 @@ TEST(RgbdOdometry, FewPhotometricInliersHandOverToTheGeometricPath) {
     }
   }
 }
+
+TEST(RgbdOdometry, CorruptValuesAndMismatchedSizesAreFlaggedNotFitted) {
+  const auto frames = bundledFrames();
+  hrgbd::RgbdOdometry odo{hrgbd::OdometryParams()};
+  odo.processObservation(*frames[0]);
+  // MRPT 2.5 stores depth as uint16 x rangeUnits, so it cannot hold NaN; the analogue of an
+  // infinite value is saturation (0xFFFF = 13 m here). A third of the image saturated or zero:
+  // those pixels are out of range; the frame still registers on the rest.
+  auto nan_depth = *frames[1];
+  for (int v = 0; v < nan_depth.rangeImage.rows() / 3; ++v)
+    for (int u = 0; u < nan_depth.rangeImage.cols(); ++u)
+      nan_depth.rangeImage(v, u) = (u % 2) ? 0xFFFF : 0;  // saturated = far beyond range
+  const auto r1 = odo.processObservation(nan_depth);
+  EXPECT_EQ(r1.status, FrameResult::Status::Ok) << r1.detail;
+  // Colour and depth of different sizes.
+  auto small = *frames[2];
+  small.intensityImage = mrpt::img::CImage(320, 240, mrpt::img::CH_RGB);
+  const auto r2 = odo.processObservation(small);
+  EXPECT_EQ(r2.status, FrameResult::Status::BadInput);
+  EXPECT_FALSE(r2.detail.empty());
+  // Zero focal length.
+  auto zero = *frames[3];
+  zero.cameraParamsIntensity.intrinsicParams(0, 0) = 0;
+  const auto r3 = odo.processObservation(zero);
+  EXPECT_EQ(r3.status, FrameResult::Status::BadInput) << r3.detail;
+  // A fully occluded frame (black image, no depth) is flagged; the next good frame registers.
+  auto occluded = *frames[4];
+  occluded.rangeImage.setZero();
+  occluded.intensityImage = mrpt::img::CImage(640, 480, mrpt::img::CH_RGB);
+  occluded.intensityImage.asCvMatRef().setTo(0);
+  const auto r4 = odo.processObservation(occluded);
+  EXPECT_FALSE(r4.registered());
+  const auto r5 = odo.processObservation(*frames[5]);
+  EXPECT_EQ(r5.status, FrameResult::Status::Ok) << r5.detail;
+  for (const auto& r : {r1, r2, r3, r4, r5})
+    for (double v : r.pose.asVectorVal()) EXPECT_TRUE(std::isfinite(v));
+}
+
+TEST(RgbdOdometry, SuddenJumpIsFlaggedOrRegisteredNeverWildlyWrong) {
+  // Frames 0-2, then a jump to frame 15 (0.4 s later): either registered close to the truth or
+  // flagged with a predicted pose; either way tracking goes on.
+  const auto frames = bundledFrames();
+  hrgbd::RawlogSource src(std::string(HRGBD_SOURCE_DIR) + "/rawlogs/desk_near.rawlog");
+  while (src.next()) {
+  }
+  const auto gt = src.groundTruth();
+  hrgbd::RgbdOdometry odo{hrgbd::OdometryParams()};
+  for (int i : {0, 1, 2}) odo.processObservation(*frames[i]);
+  const auto jump = odo.processObservation(*frames[15]);
+  const auto truth = (-gt[0].pose) + gt[15].pose;
+  if (jump.registered()) {
+    EXPECT_LT((jump.pose.translation() - truth.translation()).norm(), 0.05) << jump.detail;
+  }
+  const auto next = odo.processObservation(*frames[16]);
+  EXPECT_EQ(next.status, FrameResult::Status::Ok) << next.detail;
+}

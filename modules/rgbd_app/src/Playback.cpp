@@ -161,6 +161,10 @@ PlaybackSummary runPlayback(const PlaybackOptions& opt, std::ostream& log) {
   }
   if (bar) std::cerr << "\n";
   sum.frames = sum.results.size();
+  if (sum.frames == 0)
+    throw std::runtime_error("no RGB-D frames (CObservation3DRangeScan) in " + source->describe() +
+                             " (" + std::to_string(source->stats().skipped_objects) +
+                             " other objects skipped)");
   std::vector<double> ms;
   for (const auto& r : sum.results) ms.push_back(r.ms_total);
   sum.median_ms = percentile(ms, 0.5);

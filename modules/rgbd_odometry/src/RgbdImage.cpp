@@ -41,6 +41,15 @@ cv::Mat registerDepth(const cv::Mat& depth, const PinholeCamera& dcam, const Pin
   return out;
 }
 
+// An image must have the size its intrinsics were calibrated for (when they say).
+void requireSize(const cv::Mat& img, const mrpt::img::TCamera& c, const char* which) {
+  if (c.ncols == 0 || c.nrows == 0) return;
+  if (img.cols != static_cast<int>(c.ncols) || img.rows != static_cast<int>(c.nrows))
+    throw std::invalid_argument(std::string(which) + " image is " + std::to_string(img.cols) + "x" +
+                                std::to_string(img.rows) + " but its intrinsics are for " +
+                                std::to_string(c.ncols) + "x" + std::to_string(c.nrows));
+}
+
 }  // namespace
 
 RgbdImage prepareRgbdImage(const mrpt::obs::CObservation3DRangeScan& obs) {
@@ -52,7 +61,9 @@ RgbdImage prepareRgbdImage(const mrpt::obs::CObservation3DRangeScan& obs) {
   f.t = timestampSeconds(obs);
   cv::cvtColor(bgr, f.grey, cv::COLOR_BGR2GRAY);
   f.cam = toPinhole(obs.cameraParamsIntensity, "colour camera");
+  requireSize(bgr, obs.cameraParamsIntensity, "colour");
   cv::Mat depth = depthMetres(obs);  // throws for range_is_depth = false
+  requireSize(depth, obs.cameraParams, "depth");
   cv::patchNaNs(depth, 0);
   cv::threshold(depth, depth, 1e6, 0, cv::THRESH_TOZERO_INV);  // +inf and absurd values -> 0
   if (obs.doDepthAndIntensityCamerasCoincide() && depth.size() == f.grey.size()) {
