@@ -32,11 +32,6 @@ const Bound kBounds[] = {
     {"tum_fr3_cabinet_58keyframes", "depth_only", 1.0297, 2.1180},
 };
 
-double jsonValue(const std::string& json, const std::string& key) {
-  const auto p = json.find("\"" + key + "\": ");
-  return p == std::string::npos ? -1 : std::stod(json.substr(p + key.size() + 4));
-}
-
 }  // namespace
 
 TEST(RealOdometry, AteWithinMeasuredBoundsForEveryMethod) {
@@ -51,8 +46,8 @@ TEST(RealOdometry, AteWithinMeasuredBoundsForEveryMethod) {
     std::ostringstream log;
     const auto s = hrgbd::runPlayback(o, log);
     ASSERT_TRUE(s.evaluated) << log.str();
-    const double ate = jsonValue(s.eval_json, "ate_rmse");
-    const double unaligned = jsonValue(s.eval_json, "ate_mean_unaligned");
+    const double ate = s.eval.ate_rmse;
+    const double unaligned = s.eval.ate_mean_unaligned;
     std::printf("%-26s %-10s registered %3zu/%3zu  ATE RMSE %.4f m  unaligned mean %.4f m\n",
                 b.sequence, b.method, s.registered, s.frames, ate, unaligned);
     EXPECT_LE(ate, 1.3 * b.ate_rmse + 0.002) << b.sequence << " " << b.method;

@@ -18,7 +18,7 @@ MapOutputs::MapOutputs(const MapOutputPaths& paths, const MapParams& params) : m
 
 void MapOutputs::add(const mrpt::obs::CObservation3DRangeScan& obs, const FrameResult& r) {
   const auto pose = opticalToMrptWorld(r.pose);
-  m_path.push_back(pose);
+  if (!m_paths.map_scene.empty()) m_path.push_back(pose);
   if (m_rawlog) {
     // The camera's estimated pose in the MRPT world, where RawLogViewer and rawlog-edit
     // --list-poses read it. The frame's own sensorPose is replaced.
@@ -30,9 +30,8 @@ void MapOutputs::add(const mrpt::obs::CObservation3DRangeScan& obs, const FrameR
     // observations2map inserts each frame at (simplemap pose) (+) sensorPose.
     auto copy = mrpt::obs::CObservation3DRangeScan::Create(obs);
     copy->sensorPose = mrpt::poses::CPose3D();
-    copy->intensityImage =
-        mrpt::img::CImage(obs.intensityImage.asCvMat<cv::Mat>(mrpt::img::DEEP_COPY),
-                          mrpt::img::DEEP_COPY);  // inline, not external
+    copy->intensityImage = mrpt::img::CImage(  // inline, not external
+        obs.intensityImage.asCvMat<cv::Mat>(mrpt::img::DEEP_COPY), mrpt::img::SHALLOW_COPY);
     // MRPT's point maps insert a 3D range scan from its stored point cloud (as
     // `rawlog-edit --generate-3d-pointclouds` makes it), not from the depth image.
     mrpt::obs::T3DPointsProjectionParams pp;

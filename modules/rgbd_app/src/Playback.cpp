@@ -30,8 +30,7 @@ struct PlaybackSection {
         {"input", "trajectory", "csv", "output_rawlog", "simplemap", "map_ply", "map_scene"});
     auto path = [&](const std::string& key, const std::string& def) {
       const auto v = c.read_string("Playback", key, def);
-      if (v.empty() || v == "openni2" || std::filesystem::path(v).is_absolute()) return v;
-      return (std::filesystem::path(base) / v).lexically_normal().string();
+      return v == "openni2" ? v : resolvePath(base, v);
     };
     input = path("input", "");
     trajectory = c.keyExists("Playback", "trajectory") ? path("trajectory", "") : trajectory;
@@ -182,9 +181,7 @@ PlaybackSummary runPlayback(const PlaybackOptions& opt, std::ostream& log) {
       const auto e = evaluateTrajectory(gt, estimate);
       sum.evaluated = true;
       sum.eval = e;
-      sum.eval_text = toText(e);
-      sum.eval_json = toJson(e);
-      log << "evaluation against ground truth:\n" << sum.eval_text;
+      log << "evaluation against ground truth:\n" << toText(e);
       if (!opt.plot.empty()) plotEvaluation(e, opt.plot, input + " (" + params.method + ")");
     } catch (const std::exception& ex) {
       log << "evaluation skipped: " << ex.what() << "\n";

@@ -3,15 +3,11 @@
 #include <sys/utsname.h>
 
 #include <chrono>
-#include <cmath>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
-#include <functional>
 #include <iomanip>
-#include <map>
 #include <opencv2/core.hpp>
-#include <optional>
 #include <sstream>
 #include <thread>
 
@@ -35,11 +31,6 @@ std::string joinList(const std::vector<std::string>& v) {
   std::string s;
   for (const auto& w : v) s += (s.empty() ? "" : " ") + w;
   return s;
-}
-
-std::string resolve(const std::string& base, const std::string& p) {
-  if (p.empty() || fs::path(p).is_absolute()) return p;
-  return (fs::path(base) / p).lexically_normal().string();
 }
 
 // "fr1_xyz_groundtruth_per_rgb_frame.txt" -> "fr1_xyz"
@@ -167,11 +158,11 @@ BenchmarkReport runBenchmark(const std::string& config_file, const std::vector<s
   BenchmarkParams p;
   p.loadFromConfigFile(*cfg, "Benchmark");
   const auto base = fs::path(config_file).parent_path().string();
-  p.cache_folder = resolve(base, p.cache_folder);
-  p.output_folder = resolve(base, p.output_folder);
+  p.cache_folder = resolvePath(base, p.cache_folder);
+  p.output_folder = resolvePath(base, p.output_folder);
   for (auto& m : p.sim_motions)
-    if (m != "sweep") m = resolve(base, m);
-  for (auto& r : p.real_sequences) r = resolve(base, r);
+    if (m != "sweep") m = resolvePath(base, m);
+  for (auto& r : p.real_sequences) r = resolvePath(base, r);
 
   BenchmarkReport report;
   report.config_file = config_file;

@@ -3,6 +3,7 @@
 #include <mrpt/config/CConfigFile.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -27,6 +28,11 @@ void requireValid(bool ok, const std::string& section, const std::string& key, d
   std::ostringstream msg;
   msg << "[" << section << "] " << key << " = " << value << ": " << why;
   throw ConfigError(msg.str());
+}
+
+std::string resolvePath(const std::string& base, const std::string& path) {
+  if (path.empty() || std::filesystem::path(path).is_absolute()) return path;
+  return (std::filesystem::path(base) / path).lexically_normal().string();
 }
 
 std::unique_ptr<mrpt::config::CConfigFileBase> loadIniFile(const std::string& path) {

@@ -49,6 +49,11 @@ std::size_t ColouredMap::insert(const mrpt::obs::CObservation3DRangeScan& obs,
   // The point in the MRPT camera frame is M^-1 (+) p_optical, M = mrptFrameInOptical().
   const auto world = opticalToMrptWorld(optical_pose) + (-mrptFrameInOptical());
   const double inv = 1.0 / m_params.voxel_size;
+  // 21 bits per axis: +-10 km at 1 cm voxels.
+  auto cell = [inv](double c) {
+    return static_cast<std::uint64_t>(static_cast<std::int64_t>(std::floor(c * inv)) + (1 << 20)) &
+           0x1FFFFF;
+  };
   std::size_t added = 0;
   for (int v = 0; v < img.depth.rows; v += m_params.pixel_stride) {
     const float* z = img.depth.ptr<float>(v);
@@ -57,12 +62,6 @@ std::size_t ColouredMap::insert(const mrpt::obs::CObservation3DRangeScan& obs,
       const auto p = img.cam.backProject(u, v, z[u]);
       double x, y, zz;
       world.composePoint(p.x(), p.y(), p.z(), x, y, zz);
-      // 21 bits per axis: +-10 km at 1 cm voxels.
-      auto cell = [&](double c) {
-        return static_cast<std::uint64_t>(static_cast<std::int64_t>(std::floor(c * inv)) +
-                                          (1 << 20)) &
-               0x1FFFFF;
-      };
       if (!m_voxels.insert(cell(x) | cell(y) << 21 | cell(zz) << 42).second) continue;
       float r, g, b;
       if (bgr) {

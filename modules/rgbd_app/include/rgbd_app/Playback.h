@@ -35,8 +35,7 @@ struct PlaybackSummary {
   std::size_t frames = 0, registered = 0;
   std::vector<FrameResult> results;
   bool evaluated = false;
-  EvalResult eval;  //!< valid when evaluated
-  std::string eval_text, eval_json;
+  EvalResult eval;  //!< valid when evaluated (toText() / toJson() format it)
   double median_ms = 0, p95_ms = 0;
   std::size_t map_points = 0;  //!< points in the coloured map (when a map output was asked)
 };

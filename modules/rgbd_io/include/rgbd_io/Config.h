@@ -23,6 +23,9 @@ void rejectUnknownKeys(const mrpt::config::CConfigFileBase& cfg, const std::stri
 void requireValid(bool ok, const std::string& section, const std::string& key, double value,
                   const std::string& why);
 
+/** `path` relative to `base` (the INI file's folder) unless it is empty or absolute. */
+std::string resolvePath(const std::string& base, const std::string& path);
+
 /** Loads an INI file, throwing ConfigError if it is missing or unreadable. */
 std::unique_ptr<mrpt::config::CConfigFileBase> loadIniFile(const std::string& path);
 
