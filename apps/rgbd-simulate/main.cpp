@@ -30,7 +30,7 @@ int main(int argc, char** argv) {
     ini.write("Simulator", "seed", seed.getValue());
     ini.write("Simulator", "motion", motion.getValue());
     hrgbd::sim::SimParams p;
-    p.loadFromConfigFile(ini, "Simulator");
+    hrgbd::loadStrict(p, ini, "Simulator");
     if (rawlog.getValue().empty() && tum.getValue().empty())
       throw std::runtime_error("give --rawlog and/or --tum");
     const auto& m = images.getValue();

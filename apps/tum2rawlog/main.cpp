@@ -24,7 +24,7 @@ int main(int argc, char** argv) {
 
     hrgbd::TumSourceParams params;
     if (!cfg.getValue().empty())
-      params.loadFromConfigFile(*hrgbd::loadIniFile(cfg.getValue()), "TumSource");
+      hrgbd::loadStrict(params, *hrgbd::loadIniFile(cfg.getValue()), "TumSource");
     const auto mode = images.getValue();
     if (mode != "inline" && mode != "png" && mode != "jpg")
       throw std::runtime_error("--images must be inline, png or jpg");

@@ -18,7 +18,57 @@ std::string messageOf(const std::string& ini) {
   }
   return "";
 }
+// One field of each kind, loaded the MRPT way (which reads "abc" as 0 without a word).
+struct Kinds : public mrpt::config::CLoadableOptions {
+  int count = 3;
+  double size = 0.02;
+  bool flag = true;
+  std::string name = "hybrid";
+  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override {
+    MRPT_LOAD_CONFIG_VAR_CS(count, int);
+    MRPT_LOAD_CONFIG_VAR_CS(size, double);
+    MRPT_LOAD_CONFIG_VAR_CS(flag, bool);
+    MRPT_LOAD_CONFIG_VAR_CS(name, string);
+  }
+  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override {
+    MRPT_SAVE_CONFIG_VAR(count, c, s);
+    MRPT_SAVE_CONFIG_VAR(size, c, s);
+    MRPT_SAVE_CONFIG_VAR(flag, c, s);
+    MRPT_SAVE_CONFIG_VAR(name, c, s);
+  }
+};
+
+std::string strictMessageOf(const std::string& line) {
+  mrpt::config::CConfigFileMemory cfg("[K]\n" + line + "\n");
+  Kinds k;
+  try {
+    hrgbd::loadStrict(k, cfg, "K");
+  } catch (const ConfigError& e) {
+    return e.what();
+  }
+  return "";
+}
 }  // namespace
+
+TEST(Config, LoadStrictRejectsValuesMrptWouldMisread) {
+  for (const auto* line : {"size = abc", "size = 1,5", "size =", "size = nan", "size = 1e400",
+                           "count = 2.7", "count = 99999999999", "count = x", "flag = maybe"}) {
+    const auto msg = strictMessageOf(line);
+    const std::string key = std::string(line).substr(0, std::string(line).find(' '));
+    EXPECT_NE(msg.find("[K] " + key), std::string::npos) << line << " -> '" << msg << "'";
+  }
+}
+
+TEST(Config, LoadStrictAcceptsWellFormedValues) {
+  mrpt::config::CConfigFileMemory cfg(
+      "[K]\ncount = -4\nsize = 2.5e-3\nflag = no\nname = 1,5 anything\n");
+  Kinds k;
+  hrgbd::loadStrict(k, cfg, "K");
+  EXPECT_EQ(k.count, -4);
+  EXPECT_DOUBLE_EQ(k.size, 2.5e-3);
+  EXPECT_FALSE(k.flag);
+  EXPECT_EQ(k.name, "1,5 anything");
+}
 
 TEST(Config, UnknownKeyIsRejectedNamingSectionAndKey) {
   const auto msg = messageOf("[TumSource]\ndepth_factor = 5000\ndepth_factr = 1000\n");

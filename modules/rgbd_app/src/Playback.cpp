@@ -87,17 +87,19 @@ std::unique_ptr<mrpt::config::CConfigFileBase> loadChecked(const std::string& fi
 
 std::string effectiveConfig(const std::string& config_file) {
   const auto cfg = loadChecked(config_file);
+  PlaybackSection pb;
+  pb.load(*cfg, ".");  // rejects unknown [Playback] keys; the paths are printed as written
   OdometryParams odo;
-  odo.loadFromConfigFile(*cfg, "Odometry");
+  loadStrict(odo, *cfg, "Odometry");
   TumSourceParams tum;
-  tum.loadFromConfigFile(*cfg, "TumSource");
+  loadStrict(tum, *cfg, "TumSource");
   mrpt::config::CConfigFileMemory out;
   for (const auto& key :
        {"input", "trajectory", "csv", "output_rawlog", "simplemap", "map_ply", "map_scene"})
     out.write("Playback", key, cfg->read_string("Playback", key, ""));
   odo.saveToConfigFile(out, "Odometry");
   MapParams map;
-  map.loadFromConfigFile(*cfg, "Map");
+  loadStrict(map, *cfg, "Map");
   map.saveToConfigFile(out, "Map");
   tum.saveToConfigFile(out, "TumSource");
   return out.getContent();
@@ -110,7 +112,7 @@ PlaybackSummary runPlayback(const PlaybackOptions& opt, std::ostream& log) {
           opt.config.empty() ? "." : std::filesystem::path(opt.config).parent_path().string());
   if (!opt.ini_outputs) pb.csv.clear(), pb.outputs = {};
   OdometryParams params;
-  params.loadFromConfigFile(*cfg, "Odometry");
+  loadStrict(params, *cfg, "Odometry");
   if (!opt.method.empty()) params.method = opt.method;
   RgbdOdometry odometry(params);
 
@@ -136,7 +138,7 @@ PlaybackSummary runPlayback(const PlaybackOptions& opt, std::ostream& log) {
     return cli.empty() ? ini : cli;
   };
   MapParams map_params;
-  map_params.loadFromConfigFile(*cfg, "Map");
+  loadStrict(map_params, *cfg, "Map");
   MapOutputs outputs(
       {pick(opt.output_rawlog, pb.outputs.output_rawlog), pick(opt.simplemap, pb.outputs.simplemap),
        pick(opt.map_ply, pb.outputs.map_ply), pick(opt.map_scene, pb.outputs.map_scene)},

@@ -156,7 +156,7 @@ BenchmarkReport runBenchmark(const std::string& config_file, const std::vector<s
   const auto cfg = loadIniFile(config_file);
   rejectUnknownSections(*cfg);
   BenchmarkParams p;
-  p.loadFromConfigFile(*cfg, "Benchmark");
+  loadStrict(p, *cfg, "Benchmark");
   const auto base = fs::path(config_file).parent_path().string();
   p.cache_folder = resolvePath(base, p.cache_folder);
   p.output_folder = resolvePath(base, p.output_folder);

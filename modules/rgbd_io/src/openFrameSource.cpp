@@ -2,6 +2,7 @@
 
 #include <mrpt/system/filesystem.h>
 
+#include "rgbd_io/Config.h"
 #include "rgbd_io/OpenNI2Source.h"
 #include "rgbd_io/RawlogSource.h"
 #include "rgbd_io/TumSource.h"
@@ -13,7 +14,7 @@ std::unique_ptr<FrameSource> openFrameSource(const std::string& input,
   if (input == "openni2") return std::make_unique<OpenNI2Source>(cfg, "OpenNI2");
   if (mrpt::system::directoryExists(input)) {
     TumSourceParams p;
-    p.loadFromConfigFile(cfg, "TumSource");
+    loadStrict(p, cfg, "TumSource");
     return std::make_unique<TumSource>(input, p);
   }
   return std::make_unique<RawlogSource>(input);

@@ -5,6 +5,7 @@
 #include <thread>
 
 #include "rgbd_app/Playback.h"
+#include "rgbd_io/Config.h"
 #include "rgbd_io/Trajectory.h"
 #include "rgbd_io/openFrameSource.h"
 #include "rgbd_live/Grabber.h"
@@ -34,9 +35,9 @@ void runLive(const LiveOptions& opt, std::ostream& log) {
   using Clock = std::chrono::steady_clock;
   const auto cfg = loadChecked(opt.config);
   OdometryParams params;
-  params.loadFromConfigFile(*cfg, "Odometry");
+  loadStrict(params, *cfg, "Odometry");
   MapParams map_params;
-  map_params.loadFromConfigFile(*cfg, "Map");
+  loadStrict(map_params, *cfg, "Map");
   RgbdOdometry odometry(params);
   auto source = openFrameSource(opt.input, *cfg);  // throws "no OpenNI2 sensor ..." clearly
   log << "input: " << source->describe() << "\nmethod: " << params.method << std::endl;

@@ -2,6 +2,7 @@
 /** \file Config.h
  * Strict INI loading helpers: MRPT's CLoadableOptions ignore unknown keys; ours reject them. */
 #include <mrpt/config/CConfigFileBase.h>
+#include <mrpt/config/CLoadableOptions.h>
 
 #include <memory>
 #include <stdexcept>
@@ -25,6 +26,14 @@ void requireValid(bool ok, const std::string& section, const std::string& key, d
 
 /** `path` relative to `base` (the INI file's folder) unless it is empty or absolute. */
 std::string resolvePath(const std::string& base, const std::string& path);
+
+/** Loads `p` from `section` of `cfg` after checking the syntax of every value it reads, in
+ * `section` and in the sections it writes back (sub-structs). MRPT itself reads "abc" or "" as 0,
+ * "1,5" as 1, "2.7" as 2 for an integer and "maybe" as false; here they are a ConfigError naming
+ * the key. The kind of each key (integer, real, bool, text) comes from its current value as
+ * `p.saveToConfigFile()` writes it; reals must be finite. Range checks stay in `p`'s loader. */
+void loadStrict(mrpt::config::CLoadableOptions& p, const mrpt::config::CConfigFileBase& cfg,
+                const std::string& section);
 
 /** Loads an INI file, throwing ConfigError if it is missing or unreadable. */
 std::unique_ptr<mrpt::config::CConfigFileBase> loadIniFile(const std::string& path);

@@ -1,0 +1,21 @@
+#include "rgbd_io/ErrorText.h"
+
+#include <mrpt/system/string_utils.h>
+
+#include <sstream>
+
+namespace hrgbd {
+
+std::string errorText(const std::exception& e) {
+  std::istringstream in(e.what());
+  std::string line, out;
+  while (std::getline(in, line)) {
+    line = mrpt::system::trim(line);
+    if (line.rfind("Call stack backtrace", 0) == 0) break;
+    if (line.empty() || line.rfind("====", 0) == 0) continue;
+    out += (out.empty() ? "" : "; ") + line;
+  }
+  return out.empty() ? e.what() : out;
+}
+
+}  // namespace hrgbd
