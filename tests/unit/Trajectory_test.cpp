@@ -37,6 +37,16 @@ TEST(Trajectory, MalformedLineIsReportedWithFileAndLine) {
   EXPECT_THROW(hrgbd::loadTumTrajectory(dir + "/q.txt"), std::runtime_error);
 }
 
+TEST(Trajectory, HugeAndSmallQuaternionsAreNormalised) {
+  // Found by fuzz_tum_list: squaring 1e200 overflowed and MRPT's quaternion assertion threw.
+  const auto dir = hrgbd::test::tempDir("traj_q");
+  std::ofstream(dir + "/t.txt") << "1 0 0 0 0 0 1e200 1e200\n2 0 0 0 0 0 1e-5 0\n";
+  const auto r = hrgbd::loadTumTrajectory(dir + "/t.txt");
+  ASSERT_EQ(r.size(), 2u);
+  EXPECT_NEAR(r[0].pose.yaw(), M_PI / 2, 1e-9);        // 90 deg about z
+  EXPECT_NEAR(std::abs(r[1].pose.yaw()), M_PI, 1e-9);  // 180 deg about z
+}
+
 TEST(Trajectory, OpticalAndMrptConventionsAgree) {
   // A camera at (1,2,3) looking along world +x. In the optical convention its z axis is world +x;
   // in MRPT's convention its x axis is world +x. A point 2 m in front must land at (3,2,3).

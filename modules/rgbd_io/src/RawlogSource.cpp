@@ -4,16 +4,35 @@
 #include <mrpt/obs/CRawlog.h>
 #include <mrpt/system/filesystem.h>
 
+#include <cstring>
 #include <filesystem>
 #include <stdexcept>
 
+#include "ReadGuards.h"
+#include "rgbd_io/ErrorText.h"
+
 namespace hrgbd {
+namespace {
+
+// MRPT deserialises bool fields by reading a raw byte into them: a corrupt byte leaves a bool
+// that is neither true nor false, and reading it is undefined behaviour (found by fuzz_rawlog).
+void normaliseFlags(mrpt::obs::CObservation3DRangeScan& o) {
+  for (bool* b : {&o.hasPoints3D, &o.hasRangeImage, &o.range_is_depth, &o.hasIntensityImage,
+                  &o.hasConfidenceImage}) {
+    unsigned char byte = 0;
+    std::memcpy(&byte, b, 1);
+    *b = byte != 0;
+  }
+}
+
+}  // namespace
 
 std::string groundTruthPathFor(const std::string& rawlog_path) {
   return std::filesystem::path(rawlog_path).replace_extension().string() + "_groundtruth.txt";
 }
 
 RawlogSource::RawlogSource(const std::string& path) : m_path(path) {
+  installReadGuards();
   if (!mrpt::system::fileExists(path))
     throw std::runtime_error("rawlog '" + path + "' does not exist");
   if (!m_file.open(path)) throw std::runtime_error("cannot open rawlog '" + path + "'");
@@ -43,7 +62,7 @@ mrpt::obs::CObservation3DRangeScan::Ptr RawlogSource::next() {
                                " of the uncompressed stream)");
     } catch (const std::exception& e) {
       throw std::runtime_error("rawlog '" + m_path + "' is corrupt at entry " +
-                               std::to_string(m_entry) + ": " + e.what());
+                               std::to_string(m_entry) + ": " + errorText(e));
     }
     ++m_entry;
     if (auto obs = std::dynamic_pointer_cast<CObservation3DRangeScan>(obj)) {
@@ -61,6 +80,7 @@ mrpt::obs::CObservation3DRangeScan::Ptr RawlogSource::next() {
   }
   auto obs = m_pending.front();
   m_pending.pop_front();
+  normaliseFlags(*obs);
   if (obs->hasIntensityImage && obs->intensityImage.isExternallyStored()) {
     mrpt::img::CImage::setImagesPathBase(m_images_dir);
     const auto file = obs->intensityImage.getExternalStorageFileAbsolutePath();
@@ -72,7 +92,7 @@ mrpt::obs::CObservation3DRangeScan::Ptr RawlogSource::next() {
     obs->load();
   } catch (const std::exception& e) {
     throw std::runtime_error("rawlog '" + m_path + "' entry " + std::to_string(m_entry - 1) +
-                             ": cannot load external data: " + e.what());
+                             ": cannot load external data: " + errorText(e));
   }
   ++m_stats.frames;
   return obs;

@@ -3,6 +3,7 @@
 #include <mrpt/math/CMatrixFixed.h>
 #include <mrpt/math/CQuaternion.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -27,7 +28,11 @@ Trajectory loadTumTrajectory(const std::string& path) {
       throw std::runtime_error(where + ": expected 8 numbers 't tx ty tz qx qy qz qw'");
     for (double x : v)
       if (!std::isfinite(x)) throw std::runtime_error(where + ": non-finite value");
-    const double qnorm = std::sqrt(v[4] * v[4] + v[5] * v[5] + v[6] * v[6] + v[7] * v[7]);
+    // Norm scaled by the largest component: squares of 1e200 overflow (found by fuzz_tum_list).
+    const double m = std::max({std::abs(v[4]), std::abs(v[5]), std::abs(v[6]), std::abs(v[7])});
+    const double qnorm = m == 0 ? 0
+                                : m * std::sqrt(std::pow(v[4] / m, 2) + std::pow(v[5] / m, 2) +
+                                                std::pow(v[6] / m, 2) + std::pow(v[7] / m, 2));
     if (qnorm < 1e-9) throw std::runtime_error(where + ": zero quaternion");
     mrpt::math::CQuaternionDouble q(v[7] / qnorm, v[4] / qnorm, v[5] / qnorm, v[6] / qnorm);
     traj.push_back({v[0], mrpt::poses::CPose3D(q, v[1], v[2], v[3])});
