@@ -19,7 +19,7 @@ pid=$!
 : >"$work/rss.txt"
 while kill -0 "$pid" 2>/dev/null; do
   rss=$(awk '/VmRSS/ {print $2}' "/proc/$pid/status" 2>/dev/null || true)
-  done_frames=$(($(wc -l <"$work/frames.csv" 2>/dev/null || echo 1) - 1))
+  done_frames=$(($( { wc -l <"$work/frames.csv"; } 2>/dev/null || echo 1) - 1))
   [[ -n $rss ]] && echo "$done_frames $rss" >>"$work/rss.txt"
   sleep 1
 done

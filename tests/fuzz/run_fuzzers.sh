@@ -12,9 +12,9 @@ work=$build/fuzz-work
 rm -rf "$work" && mkdir -p "$work"
 "$build/tests/fuzz/make_rawlog_seeds" "$work/seeds-rawlog" >/dev/null
 # Memory: each input has a 256 MiB heap budget for new (throwing_new.cpp), since MRPT trusts
-# length fields; malloc-family calls (OpenCV's cv::Mat) that ask for too much get NULL, as in
-# production, where OpenCV then throws "Failed to allocate".
-export ASAN_OPTIONS=allocator_may_return_null=1:detect_leaks=1
+# length fields; malloc-family calls (OpenCV's cv::Mat) over 2 GiB get NULL, as in production
+# on a machine without the memory, where OpenCV then throws "Failed to allocate".
+export ASAN_OPTIONS=allocator_may_return_null=1:max_allocation_size_mb=2048:detect_leaks=1
 status=0
 for target in tum_list ini rawlog; do
   corpus=$work/corpus-$target
@@ -24,7 +24,7 @@ for target in tum_list ini rawlog; do
   [[ $target == rawlog ]] && seeds=("$work/seeds-rawlog" "$src/regressions/$target")
   echo "== fuzz_$target for ${seconds}s"
   if ! "$build/tests/fuzz/fuzz_$target" -max_total_time="$seconds" -seed="$seed" -timeout=20 -rss_limit_mb=4096 \
-      -malloc_limit_mb=4096 -print_final_stats=1 \
+      -malloc_limit_mb=8192 -print_final_stats=1 \
       -artifact_prefix="$work/artifacts-$target/" "$corpus" "${seeds[@]}" \
       >"$work/fuzz_$target.log" 2>&1; then
     tail -n 60 "$work/fuzz_$target.log"

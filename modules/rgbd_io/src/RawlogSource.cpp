@@ -53,6 +53,7 @@ mrpt::obs::CObservation3DRangeScan::Ptr RawlogSource::next() {
     const auto start = m_file.getPosition();
     mrpt::serialization::CSerializable::Ptr obj;
     try {
+      const ReadingRawlogEntry reading;
       obj = m_archive->ReadObject();
     } catch (const mrpt::serialization::CExceptionEOF&) {
       // A clean end leaves no byte of a partial object behind.

@@ -9,7 +9,10 @@
 //    OpenCV sets its own error_exit after calling jpeg_std_error(), so it is unaffected.
 // 2. mrpt::aligned_malloc() returns NULL when it cannot allocate, and MRPT's aligned allocator
 //    hands that to std::vector, which writes through it: a corrupt image size in a rawlog was a
-//    segmentation fault. The version here throws std::bad_alloc instead.
+//    segmentation fault. The version here throws std::bad_alloc instead, and while a rawlog
+//    entry is read (ReadingRawlogEntry) it refuses single containers over 1 GiB: a 640x480
+//    range image needs 600 KiB, and a corrupt size asked for 19 GB, which the allocator may
+//    grant and the vector then fills until the OOM killer ends the program.
 #include "ReadGuards.h"
 
 #include <dlfcn.h>
@@ -23,6 +26,9 @@
 // clang-format on
 
 namespace {
+
+constexpr std::size_t kMaxEntryAllocation = std::size_t{1} << 30;
+thread_local int t_reading_entry = 0;
 
 template <typename Fn>
 Fn nextDefinition(const char* symbol) {
@@ -52,6 +58,7 @@ namespace mrpt {
 void* aligned_malloc(size_t size, size_t alignment) {
   using Fn = void* (*)(size_t, size_t);
   static const auto real = nextDefinition<Fn>("_ZN4mrpt14aligned_mallocEmm");
+  if (t_reading_entry > 0 && size > kMaxEntryAllocation) throw std::bad_alloc();
   void* p = real(size, alignment);
   if (!p && size > 0) throw std::bad_alloc();
   return p;
@@ -60,4 +67,6 @@ void* aligned_malloc(size_t size, size_t alignment) {
 
 namespace hrgbd {
 void installReadGuards() {}  // referencing this links the interposers into the program
+ReadingRawlogEntry::ReadingRawlogEntry() { ++t_reading_entry; }
+ReadingRawlogEntry::~ReadingRawlogEntry() { --t_reading_entry; }
 }  // namespace hrgbd

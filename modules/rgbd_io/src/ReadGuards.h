@@ -5,4 +5,14 @@
 namespace hrgbd {
 /** Call where rawlogs are read: it makes the linker keep the interposers of ReadGuards.cpp. */
 void installReadGuards();
+
+/** While one exists on a thread, MRPT containers allocated there may not exceed 1 GiB each: a
+ * bigger one can only come from a corrupt length field in the rawlog entry being read. */
+class ReadingRawlogEntry {
+ public:
+  ReadingRawlogEntry();
+  ~ReadingRawlogEntry();
+  ReadingRawlogEntry(const ReadingRawlogEntry&) = delete;
+  ReadingRawlogEntry& operator=(const ReadingRawlogEntry&) = delete;
+};
 }  // namespace hrgbd
