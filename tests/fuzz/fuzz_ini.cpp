@@ -3,8 +3,6 @@
 // [TumSource] and [Map] key) and as rgbd-benchmark's [Benchmark] section. A configuration either
 // loads or is refused with hrgbd::ConfigError, whose message names the section and key; any
 // other exception or a crash is a bug.
-#include <mrpt/config/CConfigFileMemory.h>
-
 #include "FuzzUtil.h"
 #include "rgbd_app/Playback.h"
 #include "rgbd_bench/Benchmark.h"

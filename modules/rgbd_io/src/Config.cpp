@@ -104,9 +104,10 @@ void loadStrict(mrpt::config::CLoadableOptions& p, const mrpt::config::CConfigFi
                 const std::string& section) {
   mrpt::config::CConfigFileMemory written;
   p.saveToConfigFile(written, section);
-  std::vector<std::string> sections, keys;
+  std::vector<std::string> sections;
   written.getAllSections(sections);
   for (const auto& s : sections) {
+    std::vector<std::string> keys;
     written.getAllKeys(s, keys);
     for (const auto& k : keys) {
       if (!cfg.keyExists(s, k)) continue;
