@@ -20,17 +20,36 @@ int main(int argc, char** argv) {
     TCLAP::ValueArg<std::string> rawlog("o", "rawlog", "output rawlog", false, "", "OUT.rawlog",
                                         cmd);
     TCLAP::ValueArg<std::string> tum("", "tum", "output TUM folder", false, "", "FOLDER", cmd);
+    TCLAP::ValueArg<std::string> config(
+        "c", "config", "INI file whose [Simulator] section sets the scene and the sensor model",
+        false, "", "FILE.ini", cmd);
+    TCLAP::SwitchArg print("", "print-config", "print the effective [Simulator] section", cmd);
     TCLAP::ValueArg<std::string> images("", "images", "inline|png|jpg colour in the rawlog", false,
                                         "inline", "MODE", cmd);
     cmd.parse(argc, argv);
+    // The INI file first; options given on the command line override its keys.
     mrpt::config::CConfigFileMemory ini;
-    ini.write("Simulator", "scene", scene.getValue());
-    ini.write("Simulator", "far", far.getValue() ? "true" : "false");
-    ini.write("Simulator", "frames", frames.getValue());
-    ini.write("Simulator", "seed", seed.getValue());
-    ini.write("Simulator", "motion", motion.getValue());
+    if (config.isSet()) {
+      const auto file = hrgbd::loadIniFile(config.getValue());
+      for (const auto& section : {"Simulator"}) {
+        std::vector<std::string> keys;
+        file->getAllKeys(section, keys);
+        for (const auto& k : keys) ini.write(section, k, file->read_string(section, k, ""));
+      }
+    }
+    if (!config.isSet() || scene.isSet()) ini.write("Simulator", "scene", scene.getValue());
+    if (far.isSet()) ini.write("Simulator", "far", "true");
+    if (!config.isSet() || frames.isSet()) ini.write("Simulator", "frames", frames.getValue());
+    if (!config.isSet() || seed.isSet()) ini.write("Simulator", "seed", seed.getValue());
+    if (!config.isSet() || motion.isSet()) ini.write("Simulator", "motion", motion.getValue());
     hrgbd::sim::SimParams p;
     hrgbd::loadStrict(p, ini, "Simulator");
+    if (print.isSet()) {
+      mrpt::config::CConfigFileMemory out;
+      p.saveToConfigFile(out, "Simulator");
+      std::cout << out.getContent();
+      return 0;
+    }
     if (rawlog.getValue().empty() && tum.getValue().empty())
       throw std::runtime_error("give --rawlog and/or --tum");
     const auto& m = images.getValue();

@@ -2,10 +2,14 @@
 // poses must land on the depth seen by another frame, within the sensor's noise.
 #include "rgbd_sim/Simulator.h"
 
+#include <mrpt/config/CConfigFileMemory.h>
+#include <mrpt/core/bits_math.h>
+
 #include <algorithm>
 #include <fstream>
 
 #include "TestData.h"
+#include "rgbd_io/Config.h"
 
 using namespace hrgbd::sim;
 
@@ -96,4 +100,76 @@ TEST(Simulator, SameSeedSameFrames) {
       sb{std::istreambuf_iterator<char>(fb), {}};
   EXPECT_EQ(sa, sb);
   EXPECT_EQ(a.ground_truth.size(), 2u);
+}
+
+TEST(Simulator, SensorModelKeysAreReadAndChecked) {
+  mrpt::config::CConfigFileMemory ini;
+  ini.write("Simulator", "correlation_window", 5);
+  ini.write("Simulator", "rolling_shutter_ms", 12.5);
+  SimParams p;
+  hrgbd::loadStrict(p, ini, "Simulator");
+  EXPECT_EQ(p.sensor.correlation_window, 5);
+  EXPECT_DOUBLE_EQ(p.sensor.rolling_shutter_ms, 12.5);
+  ini.write("Simulator", "correlation_window", 0);
+  EXPECT_THROW(hrgbd::loadStrict(p, ini, "Simulator"), hrgbd::ConfigError);
+  ini.write("Simulator", "correlation_window", 9);
+  ini.write("Simulator", "disparity_distorsion", 0.3);  // misspelt key
+  EXPECT_THROW(hrgbd::loadStrict(p, ini, "Simulator"), hrgbd::ConfigError);
+}
+
+TEST(Simulator, EllipsoidDepthIsExact) {
+  // The teddy-like object's body (centre (0, 0, 1), radii y 0.18) seen level from 1 m away.
+  const auto scene = makeScene("object", false);
+  const SimCamera cam;
+  const auto pose = lookAt(Eigen::Vector3d(0, -1.0, 1.0), Eigen::Vector3d(0, 0, 1.0));
+  const auto f = renderIdeal(scene, pose, cam);
+  EXPECT_NEAR(f.depth.at<float>(240, 320), 1.0 - 0.18, 1e-3);
+  EXPECT_GT(f.incidence.at<float>(240, 320), 0.99);  // seen head-on
+}
+
+TEST(Simulator, RollingShutterSeesEachRowFromItsOwnPose) {
+  const auto scene = makeScene("desk", false);
+  const SimCamera cam;
+  const auto first = lookAt(Eigen::Vector3d(0, 0.0, 1.2), Eigen::Vector3d(0, 1.3, 0.75));
+  const auto last = first + mrpt::poses::CPose3D(0.02, 0, 0, mrpt::DEG2RAD(2.0), 0, 0);
+  const auto skewed = renderIdeal(scene, first, cam, last);
+  const auto a = renderIdeal(scene, first, cam), b = renderIdeal(scene, last, cam);
+  const int bottom = cam.height - 1;
+  EXPECT_EQ(cv::norm(skewed.depth.row(0), a.depth.row(0), cv::NORM_INF), 0.0);
+  EXPECT_LT(cv::norm(skewed.depth.row(bottom), b.depth.row(bottom), cv::NORM_INF), 1e-4);
+  EXPECT_GT(cv::norm(skewed.depth.row(bottom), a.depth.row(bottom), cv::NORM_INF), 0.01);
+}
+
+TEST(Simulator, ReplayedMotionLooksAtTheScene) {
+  // A hand-held orbit (radius 1.2 m, 90 deg, with a wobble) around a point far from the scene's
+  // origin, as a TUM file: replayed, the camera must keep the scene's look_at in view.
+  const Eigen::Vector3d centre(5, -3, 0.9);
+  hrgbd::Trajectory orbit;
+  for (int i = 0; i <= 90; ++i) {
+    const double a = mrpt::DEG2RAD(i), r = 1.2 + 0.05 * std::sin(0.3 * i);
+    const Eigen::Vector3d eye = centre + Eigen::Vector3d(r * std::cos(a), r * std::sin(a), 0.5);
+    orbit.push_back({i * 0.05, lookAt(eye, centre + Eigen::Vector3d(0, 0, 0.02 * std::sin(i)))});
+  }
+  EXPECT_LT((lookedAtPoint(orbit, 1.0) - centre).norm(), 0.05);
+  // Near-parallel axes (pure translation): a point `distance` ahead of the first camera.
+  hrgbd::Trajectory slide;
+  for (int i = 0; i < 10; ++i)
+    slide.push_back(
+        {i * 0.1, lookAt(Eigen::Vector3d(0.01 * i, 0, 1), Eigen::Vector3d(0.01 * i, 2, 1))});
+  EXPECT_LT((lookedAtPoint(slide, 1.5) - Eigen::Vector3d(0, 1.5, 1)).norm(), 0.05);
+
+  const auto file = hrgbd::test::tempDir("sim_replay") + "/orbit.txt";
+  hrgbd::saveTumTrajectory(file, orbit);
+  SimParams p;
+  p.scene = "object";
+  p.motion = file;
+  const auto scene = makeScene(p.scene, false);
+  std::vector<double> times;
+  for (int i = 0; i < 130; ++i) times.push_back(i / 30.0);
+  for (const auto& q : cameraPath(scene, p, times)) {
+    const auto local = q.pose.inverseComposePoint(
+        mrpt::math::TPoint3D(scene.look_at.x(), scene.look_at.y(), scene.look_at.z()));
+    EXPECT_NEAR(local.z, 1.2 * std::hypot(1, 0.5 / 1.2), 0.1);  // the real distance
+    EXPECT_LT(std::hypot(local.x, local.y) / local.z, 0.05);    // near the optical axis
+  }
 }

@@ -19,7 +19,9 @@
 namespace hrgbd::sim {
 
 void SimParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) {
-  rejectUnknownKeys(c, s, {"scene", "far", "frames", "fps", "seed", "motion"});
+  auto keys = KinectModel::keys();
+  keys.insert(keys.end(), {"scene", "far", "frames", "fps", "seed", "motion"});
+  rejectUnknownKeys(c, s, keys);
   MRPT_LOAD_CONFIG_VAR_CS(scene, string);
   MRPT_LOAD_CONFIG_VAR_CS(far, bool);
   MRPT_LOAD_CONFIG_VAR_CS(frames, int);
@@ -32,6 +34,7 @@ void SimParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const
                       ": must be texture, structure, structure_texture, desk or wall");
   requireValid(frames >= 1, s, "frames", frames, "must be >= 1");
   requireValid(fps > 0 && fps <= 1000, s, "fps", fps, "must be in (0, 1000] Hz");
+  sensor.loadFromConfigFile(c, s);
 }
 
 void SimParams::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const {
@@ -41,6 +44,7 @@ void SimParams::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::st
   MRPT_SAVE_CONFIG_VAR_COMMENT(fps, "[Hz] frame rate");
   MRPT_SAVE_CONFIG_VAR_COMMENT(seed, "noise and jitter seed");
   MRPT_SAVE_CONFIG_VAR_COMMENT(motion, "sweep, or a TUM trajectory file to replay");
+  sensor.saveToConfigFile(c, s);
 }
 
 mrpt::poses::CPose3D lookAt(const Eigen::Vector3d& eye, const Eigen::Vector3d& target) {
@@ -72,26 +76,64 @@ Trajectory cameraPath(const Scene& scene, const SimParams& p, const std::vector<
     }
     return out;
   }
-  // Replay: the real trajectory's motion relative to its first pose, from the sweep's start.
+  // Replay: the real trajectory, moved by a rotation about the vertical and a translation (TUM
+  // ground truth has z up, as the scene) so that the point the real camera looked at maps onto
+  // the scene's look_at and the camera stays on the side of view_dir. Camera height above that
+  // point, distance to it, tilt and roll stay the real ones.
   const auto real = loadTumTrajectory(p.motion);
   if (real.size() < 2) throw std::runtime_error("motion file '" + p.motion + "' has < 2 poses");
-  mrpt::poses::CPose3DInterpolator interp;
+  const double span = real.back().t - real[0].t,
+               last = *std::max_element(times.begin(), times.end());
+  if (last > span)
+    throw std::runtime_error("motion file '" + p.motion + "' covers only " + std::to_string(span) +
+                             " s");
+  Trajectory used;
   for (const auto& q : real)
-    interp.insert(mrpt::Clock::fromDouble(q.t - real[0].t), q.pose - real[0].pose);
-  const auto start = lookAt(scene.look_at + view * scene.distance, scene.look_at);
-  const double span = real.back().t - real[0].t;
+    if (q.t - real[0].t <= last + 0.1) used.push_back(q);
+  const Eigen::Vector3d target = lookedAtPoint(used, scene.distance);
+  Eigen::Vector2d away(0, 0);  // mean horizontal direction from the target to the camera
+  for (const auto& q : used) {
+    const Eigen::Vector2d h(q.pose.x() - target.x(), q.pose.y() - target.y());
+    if (h.norm() > 1e-6) away += h.normalized();
+  }
+  const double yaw =
+      std::atan2(view.y(), view.x()) - (away.norm() > 1e-6 ? std::atan2(away.y(), away.x()) : 0.0);
+  const mrpt::poses::CPose3D turn(0, 0, 0, yaw, 0, 0);
+  const auto moved = turn.composePoint({target.x(), target.y(), target.z()});
+  const mrpt::poses::CPose3D anchor =
+      mrpt::poses::CPose3D(scene.look_at.x() - moved.x, scene.look_at.y() - moved.y,
+                           scene.look_at.z() - moved.z, 0, 0, 0) +
+      turn;
+  mrpt::poses::CPose3DInterpolator interp;
+  for (const auto& q : used) interp.insert(mrpt::Clock::fromDouble(q.t - real[0].t), q.pose);
   for (double t : times) {
-    if (t > span)
-      throw std::runtime_error("motion file '" + p.motion + "' covers only " +
-                               std::to_string(span) + " s");
-    mrpt::poses::CPose3D rel;
+    mrpt::poses::CPose3D pose;
     bool valid = false;
-    interp.interpolate(mrpt::Clock::fromDouble(t), rel, valid);
+    interp.interpolate(mrpt::Clock::fromDouble(t), pose, valid);
     if (!valid)
       throw std::runtime_error("cannot interpolate '" + p.motion + "' at " + std::to_string(t));
-    out.push_back({t, start + rel});
+    out.push_back({t, anchor + pose});
   }
   return out;
+}
+
+Eigen::Vector3d lookedAtPoint(const Trajectory& path, double distance) {
+  // Least-squares point nearest to all optical axes, sum |(I - d d^T)(x - c)|^2, pulled weakly
+  // towards the first camera's axis at `distance` so that near-parallel axes (a camera that
+  // only translates) still give a point in front of it.
+  Eigen::Matrix3d A = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d b = Eigen::Vector3d::Zero();
+  auto add = [&](const Eigen::Matrix3d& P, const Eigen::Vector3d& x) { A += P, b += P * x; };
+  for (const auto& q : path) {
+    const Eigen::Vector3d c(q.pose.x(), q.pose.y(), q.pose.z());
+    const Eigen::Vector3d d = q.pose.getRotationMatrix().asEigen().col(2);
+    add(Eigen::Matrix3d::Identity() - d * d.transpose(), c);
+  }
+  const auto& first = path.front().pose;
+  const Eigen::Vector3d prior = Eigen::Vector3d(first.x(), first.y(), first.z()) +
+                                distance * first.getRotationMatrix().asEigen().col(2);
+  add(0.01 * static_cast<double>(path.size()) * Eigen::Matrix3d::Identity(), prior);
+  return A.ldlt().solve(b);
 }
 
 SimResult simulate(const SimParams& p, const SimOutputs& outputs) {
@@ -101,14 +143,17 @@ SimResult simulate(const SimParams& p, const SimOutputs& outputs) {
   constexpr double kDepthFactor = 5000;  // TUM's convention: PNG value / 5000 = metres
   constexpr double kStart = 1000.0;      // [s] time stamp of the first frame
 
-  // Poses at each frame time and at the start of its exposure, in one call (one file load).
+  // Poses at each frame time (the middle row), at the start of its exposure, and at its first
+  // and last rows' times (rolling shutter), in one call (one file load).
   std::vector<double> times;
-  for (int i = 0; i < p.frames; ++i) times.push_back(i / p.fps);
-  for (int i = 0; i < p.frames; ++i)
-    times.push_back(std::max(0.0, i / p.fps - p.sensor.exposure_ms * 1e-3));
+  const double exposure = p.sensor.exposure_ms * 1e-3, readout = p.sensor.rolling_shutter_ms * 1e-3;
+  for (double offset : {0.0, -exposure, -readout / 2, readout / 2})
+    for (int i = 0; i < p.frames; ++i) times.push_back(std::max(0.0, i / p.fps + offset));
   const auto poses = cameraPath(scene, p, times);
-  const Trajectory path(poses.begin(), poses.begin() + p.frames);
-  const Trajectory path_before(poses.begin() + p.frames, poses.end());
+  auto part = [&](int k) {
+    return Trajectory(poses.begin() + k * p.frames, poses.begin() + (k + 1) * p.frames);
+  };
+  const Trajectory path = part(0), path_before = part(1), first_row = part(2), last_row = part(3);
 
   std::unique_ptr<RawlogWriter> rawlog;
   if (!outputs.rawlog.empty())
@@ -133,8 +178,10 @@ SimResult simulate(const SimParams& p, const SimOutputs& outputs) {
     const double t = kStart + times[i];
     const double gain = 1.0 + p.sensor.auto_exposure * std::sin(2 * M_PI * times[i] / 3.7 + p.seed);
     cv::Mat bgr, depth;
-    applyKinectModel(renderIdeal(scene, path[i].pose, cam), scene, cam, path[i].pose,
-                     path_before[i].pose, gain, p.sensor, kDepthFactor, rng, bgr, depth);
+    const auto ideal = readout > 0 ? renderIdeal(scene, first_row[i].pose, cam, last_row[i].pose)
+                                   : renderIdeal(scene, path[i].pose, cam);
+    applyKinectModel(ideal, scene, cam, path[i].pose, path_before[i].pose, gain, p.sensor,
+                     kDepthFactor, rng, bgr, depth);
     ms.push_back(
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
     res.ground_truth.push_back({t, path[i].pose});

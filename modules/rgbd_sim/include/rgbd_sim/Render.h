@@ -2,9 +2,14 @@
 /** \file Render.h
  * Ideal (noise-free) ray-cast rendering of a Scene, and the Kinect-like sensor model applied to
  * it. Hand-written: no Debian library here renders depth with a Kinect noise model. */
+#include <mrpt/config/CLoadableOptions.h>
+
 #include <Eigen/Geometry>
 #include <opencv2/core.hpp>
+#include <optional>
 #include <random>
+#include <string>
+#include <vector>
 
 #include "rgbd_io/Trajectory.h"
 #include "rgbd_sim/Scene.h"
@@ -24,22 +29,45 @@ struct IdealFrame {
   cv::Mat incidence;  //!< CV_32FC1 |cos| of the angle between ray and surface normal
 };
 
-/** Ray-casts `scene` from `pose` (optical frame in the world: z forward, x right, y down). */
-IdealFrame renderIdeal(const Scene& scene, const mrpt::poses::CPose3D& pose, const SimCamera& cam);
+/** Ray-casts `scene` from `pose` (optical frame in the world: z forward, x right, y down). With
+ * `last_row_pose`, a rolling shutter: row v is seen from the pose interpolated between `pose`
+ * (row 0) and `last_row_pose` (last row). */
+IdealFrame renderIdeal(const Scene& scene, const mrpt::poses::CPose3D& pose, const SimCamera& cam,
+                       const std::optional<mrpt::poses::CPose3D>& last_row_pose = std::nullopt);
 
-/** Kinect (structured light) parameters. INI keys of [Simulator] use the same names. */
-struct KinectModel {
+/** Kinect (structured light) parameters. INI section [Simulator], the key is the field name. */
+struct KinectModel : public mrpt::config::CLoadableOptions {
   double baseline = 0.075;                   //!< [m] projector-camera baseline
   double disparity_step = 0.125;             //!< [px] disparity quantisation (1/8 px)
   double disparity_noise = 0.06;             //!< [px] per-pixel disparity noise (std)
   double disparity_noise_correlated = 0.08;  //!< [px] smooth noise field (std), ~16 px blobs
-  double min_depth = 0.5, max_depth = 4.5;   //!< [m] no depth outside
-  double min_incidence = 0.2;                //!< |cos| below which (grazing) there is no depth
+  /** [px] disparity comes from block matching over this window (9x9 or 9x7 on the Kinect,
+   * Konolige & Mihelich's ROS kinect_calibration notes): the per-pixel noise is averaged over it
+   * (neighbours share most of their window), so it is spatially correlated. 1 = none. */
+  int correlation_window = 9;
+  /** [px] fixed-pattern disparity error of the sensor unit (std): smooth over the image and the
+   * same in every frame, the residual distortion Kinect calibrations find. 0.3 px is ~1 % of
+   * the depth at 2 m; set with the realism check (README, Simulator). 0 = none. */
+  double disparity_distortion = 0.3;
+  /** [px] a farther surface this close to a nearer one takes the nearer one's depth (the block
+   * matcher's window locks onto the foreground: objects look fatter). 0 = none. */
+  int edge_fattening = 4;
+  double min_depth = 0.5, max_depth = 4.5;  //!< [m] no depth outside
+  double min_incidence = 0.2;               //!< |cos| below which (grazing) there is no depth
   double edge_dropout = 0.6;    //!< probability of no depth next to a depth discontinuity
   double flying_pixels = 0.15;  //!< probability of a mixed depth at a discontinuity
   double colour_noise = 2.5;    //!< [grey levels] colour noise (std)
   double exposure_ms = 12;      //!< [ms] exposure: motion blur along the image motion
+  /** [ms] rolling shutter readout from the first to the last row (both cameras, synchronised as
+   * in TUM fr3; ~a frame time at 30 Hz): rows see the scene at different times while the camera
+   * moves. 0 = global shutter. */
+  double rolling_shutter_ms = 30;
   double auto_exposure = 0.06;  //!< relative amplitude of slow gain changes
+
+  /** The INI keys loadFromConfigFile() reads. */
+  static const std::vector<std::string>& keys();
+  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
+  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
 };
 
 /** Applies the sensor model. `previous_pose` (pose `exposure_ms` earlier) sets the motion blur.

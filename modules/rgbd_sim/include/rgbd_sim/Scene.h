@@ -16,10 +16,19 @@ struct Quad {
   double texture_scale = 1.0;  //!< [1/m] texture features per metre
 };
 
+/** An axis-aligned ellipsoid (rounded objects: the fr3/teddy-like scene). */
+struct Ellipsoid {
+  Eigen::Vector3d centre, radii;          //!< [m]
+  Eigen::Vector3d colour{0.7, 0.7, 0.7};  //!< base albedo, RGB in [0, 1]
+  int texture = -1;                       //!< as Quad::texture
+  double texture_scale = 12.0;            //!< [1/m]
+};
+
 /** A scene and where the camera should look. */
 struct Scene {
   std::string name;
   std::vector<Quad> quads;
+  std::vector<Ellipsoid> ellipsoids;
   Eigen::Vector3d look_at{0, 0, 0};      //!< [m] centre of interest
   Eigen::Vector3d sweep_axis{1, 0, 0};   //!< direction of procedural sweeps
   Eigen::Vector3d view_dir{0, -1, 0.4};  //!< from look_at towards the camera (normalised on use)
@@ -32,8 +41,10 @@ void addBox(Scene& s, const Eigen::Vector3d& min, const Eigen::Vector3d& max,
 
 /** Scene types of the paper's Table I: "texture" (textured floor, no structure), "structure"
  * (zig-zag of plain panels on a plain floor), "structure_texture" (the same zig-zag textured),
- * "desk" (office corner with a desk and boxes, like fr1/desk), "wall" (plain flat wall: neither
- * texture nor structure). `far` puts the camera at ~2 m instead of ~1 m. Throws for other names. */
+ * "desk" (office room with a desk and boxes, like fr1/desk), "wall" (plain flat wall: neither
+ * texture nor structure); and "object" (a rounded furry object on a plain pedestal in an open
+ * hall, like fr3/teddy: the counterpart of the real frames in the realism check). `far` puts the
+ * camera at ~2 m instead of ~1 m. Throws for other names. */
 Scene makeScene(const std::string& type, bool far);
 
 /** The scene type names makeScene() accepts. */

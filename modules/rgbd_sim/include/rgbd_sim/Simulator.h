@@ -20,7 +20,7 @@ struct SimParams : public mrpt::config::CLoadableOptions {
   double fps = 30;             //!< [Hz]
   int seed = 1;                //!< noise and jitter seed (same seed, same sequence)
   /** "sweep" (procedural sweep along the structure with hand-held jitter) or a TUM trajectory
-   * file whose relative motion is replayed, re-anchored to look at the scene. */
+   * file whose motion is replayed, moved so that the point it looked at is the scene's look_at. */
   std::string motion = "sweep";
   KinectModel sensor;
 
@@ -31,6 +31,10 @@ struct SimParams : public mrpt::config::CLoadableOptions {
 /** Camera trajectory (optical frame in the world) sampled at `times`. */
 Trajectory cameraPath(const Scene& scene, const SimParams& params,
                       const std::vector<double>& times);
+
+/** The point a hand-held camera path looked at: nearest to all its optical axes (least squares),
+ * or about `distance` [m] ahead of the first camera when the axes are near-parallel. */
+Eigen::Vector3d lookedAtPoint(const Trajectory& path, double distance);
 
 /** The first pose of a sweep: at `distance` from look_at along view_dir, looking at look_at. */
 mrpt::poses::CPose3D lookAt(const Eigen::Vector3d& eye, const Eigen::Vector3d& target);
