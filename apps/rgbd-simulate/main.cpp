@@ -10,8 +10,9 @@
 int main(int argc, char** argv) {
   try {
     TCLAP::CmdLine cmd("rgbd-simulate: Kinect-like RGB-D sequences with ground truth", ' ', "0.1");
-    TCLAP::ValueArg<std::string> scene(
-        "s", "scene", "texture|structure|structure_texture|desk|wall", false, "desk", "SCENE", cmd);
+    TCLAP::ValueArg<std::string> scene("s", "scene",
+                                       "texture|structure|structure_texture|desk|wall|object",
+                                       false, "desk", "SCENE", cmd);
     TCLAP::SwitchArg far("", "far", "camera at ~2 m instead of ~1 m", cmd);
     TCLAP::ValueArg<int> frames("n", "frames", "number of frames (30)", false, 30, "N", cmd);
     TCLAP::ValueArg<int> seed("", "seed", "noise seed (1)", false, 1, "SEED", cmd);

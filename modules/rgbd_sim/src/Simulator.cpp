@@ -31,14 +31,14 @@ void SimParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const
   const auto& types = sceneTypes();
   if (std::find(types.begin(), types.end(), scene) == types.end())
     throw ConfigError("[" + s + "] scene = " + scene +
-                      ": must be texture, structure, structure_texture, desk or wall");
+                      ": must be texture, structure, structure_texture, desk, wall or object");
   requireValid(frames >= 1, s, "frames", frames, "must be >= 1");
   requireValid(fps > 0 && fps <= 1000, s, "fps", fps, "must be in (0, 1000] Hz");
   sensor.loadFromConfigFile(c, s);
 }
 
 void SimParams::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const {
-  MRPT_SAVE_CONFIG_VAR_COMMENT(scene, "texture|structure|structure_texture|desk|wall");
+  MRPT_SAVE_CONFIG_VAR_COMMENT(scene, "texture|structure|structure_texture|desk|wall|object");
   MRPT_SAVE_CONFIG_VAR_COMMENT(far, "camera at ~2 m (true) or ~1 m (false)");
   MRPT_SAVE_CONFIG_VAR_COMMENT(frames, "[count] frames to render");
   MRPT_SAVE_CONFIG_VAR_COMMENT(fps, "[Hz] frame rate");

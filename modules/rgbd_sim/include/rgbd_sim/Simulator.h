@@ -14,7 +14,7 @@ namespace hrgbd::sim {
 
 /** Parameters of simulate(). INI section [Simulator]. */
 struct SimParams : public mrpt::config::CLoadableOptions {
-  std::string scene = "desk";  //!< texture|structure|structure_texture|desk|wall
+  std::string scene = "desk";  //!< texture|structure|structure_texture|desk|wall|object
   bool far = false;            //!< camera at ~2 m instead of ~1 m
   int frames = 30;             //!< [count]
   double fps = 30;             //!< [Hz]
