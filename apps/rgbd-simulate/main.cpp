@@ -32,11 +32,9 @@ int main(int argc, char** argv) {
     mrpt::config::CConfigFileMemory ini;
     if (config.isSet()) {
       const auto file = hrgbd::loadIniFile(config.getValue());
-      for (const auto& section : {"Simulator"}) {
-        std::vector<std::string> keys;
-        file->getAllKeys(section, keys);
-        for (const auto& k : keys) ini.write(section, k, file->read_string(section, k, ""));
-      }
+      std::vector<std::string> keys;
+      file->getAllKeys("Simulator", keys);
+      for (const auto& k : keys) ini.write("Simulator", k, file->read_string("Simulator", k, ""));
     }
     if (!config.isSet() || scene.isSet()) ini.write("Simulator", "scene", scene.getValue());
     if (far.isSet()) ini.write("Simulator", "far", "true");

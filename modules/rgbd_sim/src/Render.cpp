@@ -69,36 +69,37 @@ IdealFrame renderIdeal(const Scene& scene, const mrpt::poses::CPose3D& pose, con
         best = t, blob = static_cast<int>(k), hit = -1;
       }
       auto& col = f.colour.at<cv::Vec3f>(v, u);
-      if (blob >= 0) {
-        const auto& e = scene.ellipsoids[blob];
-        const Eigen::Vector3d p = c + best * d - e.centre;
-        const Eigen::Vector3d normal = p.cwiseQuotient(e.radii.cwiseProduct(e.radii)).normalized();
-        // Texture coordinates [m]: around the vertical axis and up it.
-        const double around = std::atan2(p.y(), p.x()) * 0.5 * (e.radii.x() + e.radii.y());
-        const Eigen::Vector3d albedo =
-            e.colour.cwiseProduct(textureColour(e.texture, around, p.z(), e.texture_scale));
-        const Eigen::Vector3d rgb = albedo * (0.35 + 0.65 * std::max(0.0, normal.dot(light)));
-        col = cv::Vec3f(static_cast<float>(rgb.z()), static_cast<float>(rgb.y()),
-                        static_cast<float>(rgb.x()));
-        f.depth.at<float>(v, u) = static_cast<float>(best);
-        f.incidence.at<float>(v, u) = static_cast<float>(std::abs(normal.dot(d.normalized())));
-        continue;
-      }
-      if (hit < 0) {
+      if (hit < 0 && blob < 0) {
         col = cv::Vec3f(0.05f, 0.05f, 0.06f);
         f.depth.at<float>(v, u) = 0;
         f.incidence.at<float>(v, u) = 0;
         continue;
       }
-      const auto& q = qs[hit];
-      Eigen::Vector3d albedo = q.colour;
-      if (q.texture >= 0) albedo = albedo.cwiseProduct(textureColour(q.texture, ha, hb, q.scale));
-      const double shade = 0.35 + 0.65 * std::abs(q.n.dot(light));
-      const Eigen::Vector3d rgb = albedo * shade;
+      // The surface's normal, albedo and Lambertian term (planes are lit from both sides).
+      Eigen::Vector3d normal, albedo;
+      double lambert = 0;
+      if (blob >= 0) {
+        const auto& e = scene.ellipsoids[blob];
+        const Eigen::Vector3d p = c + best * d - e.centre;
+        normal = p.cwiseQuotient(e.radii.cwiseProduct(e.radii)).normalized();
+        // Texture coordinates [m]: around the vertical axis and up it.
+        const double around = std::atan2(p.y(), p.x()) * 0.5 * (e.radii.x() + e.radii.y());
+        albedo = e.colour;
+        if (e.texture >= 0)
+          albedo = albedo.cwiseProduct(textureColour(e.texture, around, p.z(), e.texture_scale));
+        lambert = std::max(0.0, normal.dot(light));
+      } else {
+        const auto& q = qs[hit];
+        normal = q.n;
+        albedo = q.colour;
+        if (q.texture >= 0) albedo = albedo.cwiseProduct(textureColour(q.texture, ha, hb, q.scale));
+        lambert = std::abs(normal.dot(light));
+      }
+      const Eigen::Vector3d rgb = albedo * (0.35 + 0.65 * lambert);
       col = cv::Vec3f(static_cast<float>(rgb.z()), static_cast<float>(rgb.y()),
                       static_cast<float>(rgb.x()));  // stored BGR, as OpenCV
       f.depth.at<float>(v, u) = static_cast<float>(best);
-      f.incidence.at<float>(v, u) = static_cast<float>(std::abs(q.n.dot(d.normalized())));
+      f.incidence.at<float>(v, u) = static_cast<float>(std::abs(normal.dot(d.normalized())));
     }
   }
   return f;
