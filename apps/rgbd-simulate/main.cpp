@@ -4,7 +4,7 @@
 
 #include <iostream>
 
-#include "rgbd_io/Config.h"
+#include "rgbd_core/Config.h"
 #include "rgbd_sim/Simulator.h"
 
 int main(int argc, char** argv) {

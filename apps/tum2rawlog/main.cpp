@@ -4,7 +4,7 @@
 
 #include <iostream>
 
-#include "rgbd_io/Config.h"
+#include "rgbd_core/Config.h"
 #include "rgbd_io/RawlogSource.h"
 #include "rgbd_io/RawlogWriter.h"
 #include "rgbd_io/TumSource.h"

@@ -6,7 +6,7 @@
 #include "FuzzUtil.h"
 #include "rgbd_app/Playback.h"
 #include "rgbd_bench/Benchmark.h"
-#include "rgbd_io/Config.h"
+#include "rgbd_core/Config.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
   static const auto path = hrgbd::fuzz::tempPath("config.ini");

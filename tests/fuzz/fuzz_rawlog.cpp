@@ -6,8 +6,8 @@
 #include <stdexcept>
 
 #include "FuzzUtil.h"
+#include "rgbd_core/RgbdImage.h"
 #include "rgbd_io/RawlogSource.h"
-#include "rgbd_odometry/RgbdImage.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
   static const auto path = hrgbd::fuzz::tempPath("input.rawlog");

@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 #include "FuzzUtil.h"
-#include "rgbd_io/Trajectory.h"
+#include "rgbd_core/Trajectory.h"
 #include "rgbd_io/TumLists.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {

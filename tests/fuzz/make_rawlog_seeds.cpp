@@ -8,8 +8,8 @@
 #include <filesystem>
 #include <iostream>
 
+#include "rgbd_core/RgbdFrame.h"
 #include "rgbd_io/RawlogWriter.h"
-#include "rgbd_io/RgbdFrame.h"
 
 namespace {
 

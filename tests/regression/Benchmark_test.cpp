@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "TestData.h"
-#include "rgbd_io/Config.h"
+#include "rgbd_core/Config.h"
 
 namespace {
 std::string writeIni(const std::string& dir, const std::string& extra) {

@@ -9,7 +9,7 @@
 
 #include "TestData.h"
 #include "rgbd_app/Playback.h"
-#include "rgbd_io/Config.h"
+#include "rgbd_core/Config.h"
 #include "rgbd_io/RawlogWriter.h"
 
 TEST(Bundled, DefaultJobTracksTheSimulatedDesk) {

@@ -11,8 +11,8 @@
 
 #include "TestData.h"
 #include "rgbd_app/Playback.h"
+#include "rgbd_core/RgbdFrame.h"
 #include "rgbd_io/RawlogSource.h"
-#include "rgbd_io/RgbdFrame.h"
 #include "rgbd_map/ColouredMap.h"
 
 namespace {

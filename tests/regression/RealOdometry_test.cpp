@@ -5,8 +5,8 @@
 
 #include "TestData.h"
 #include "rgbd_app/Playback.h"
-#include "rgbd_io/Intrinsics.h"
-#include "rgbd_io/RgbdFrame.h"
+#include "rgbd_core/Intrinsics.h"
+#include "rgbd_core/RgbdFrame.h"
 
 namespace {
 

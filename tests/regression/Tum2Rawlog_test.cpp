@@ -6,8 +6,8 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "TestData.h"
+#include "rgbd_core/RgbdFrame.h"
 #include "rgbd_io/RawlogSource.h"
-#include "rgbd_io/RgbdFrame.h"
 #include "rgbd_io/TumLists.h"
 
 TEST(Tum2Rawlog, RealFramesSurviveToTheMillimetre) {

@@ -1,4 +1,4 @@
-#include "rgbd_io/Config.h"
+#include "rgbd_core/Config.h"
 
 #include <mrpt/config/CConfigFileMemory.h>
 

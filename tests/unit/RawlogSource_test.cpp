@@ -8,9 +8,9 @@
 #include <fstream>
 
 #include "TestData.h"
-#include "rgbd_io/Intrinsics.h"
+#include "rgbd_core/Intrinsics.h"
+#include "rgbd_core/RgbdFrame.h"
 #include "rgbd_io/RawlogWriter.h"
-#include "rgbd_io/RgbdFrame.h"
 
 namespace {
 

@@ -1,10 +1,10 @@
-#include "rgbd_io/RgbdFrame.h"
+#include "rgbd_core/RgbdFrame.h"
 
 #include <mrpt/maps/CColouredPointsMap.h>
 #include <mrpt/obs/T3DPointsProjectionParams.h>
 
 #include "TestData.h"
-#include "rgbd_io/Intrinsics.h"
+#include "rgbd_core/Intrinsics.h"
 
 TEST(RgbdFrame, DepthKeepsFullPrecisionAndUnprojectsInMetres) {
   const auto cam = hrgbd::intrinsicsPreset("fr3");

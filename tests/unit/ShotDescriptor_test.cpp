@@ -4,8 +4,8 @@
 #include <gtest/gtest.h>
 
 #include "SyntheticClouds.h"
+#include "rgbd_core/Trajectory.h"
 #include "rgbd_io/RawlogSource.h"
-#include "rgbd_io/Trajectory.h"
 #include "rgbd_odometry/GeometricFeatures.h"
 #include "rgbd_odometry/Is3dSampling.h"
 

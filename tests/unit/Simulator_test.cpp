@@ -9,7 +9,7 @@
 #include <fstream>
 
 #include "TestData.h"
-#include "rgbd_io/Config.h"
+#include "rgbd_core/Config.h"
 
 using namespace hrgbd::sim;
 
@@ -18,7 +18,7 @@ namespace {
 // pose B, where frame B has depth.
 std::vector<double> depthAgreement(const cv::Mat& depth_a, const mrpt::poses::CPose3D& pose_a,
                                    const cv::Mat& depth_b, const mrpt::poses::CPose3D& pose_b,
-                                   const SimCamera& cam, int step) {
+                                   const hrgbd::PinholeCamera& cam, int step) {
   std::vector<double> rel;
   for (int v = 0; v < cam.height; v += step)
     for (int u = 0; u < cam.width; u += step) {
@@ -40,7 +40,7 @@ TEST(Simulator, TwoFramesOverlapWithinTheNoiseLevel) {
   SimParams p;
   p.scene = "desk";
   const auto scene = makeScene(p.scene, false);
-  const SimCamera cam;
+  const hrgbd::PinholeCamera cam;
   const auto path = cameraPath(scene, p, {0.0, 0.5});
   std::mt19937 rng(3);
   cv::Mat bgr[2], depth[2];
@@ -70,7 +70,7 @@ TEST(Simulator, DepthIsQuantisedInDisparity) {
   p.scene = "wall";
   p.far = true;
   const auto scene = makeScene(p.scene, true);
-  const SimCamera cam;
+  const hrgbd::PinholeCamera cam;
   const auto pose = cameraPath(scene, p, {0.0})[0].pose;
   std::mt19937 rng(1);
   cv::Mat bgr, depth;
@@ -120,7 +120,7 @@ TEST(Simulator, SensorModelKeysAreReadAndChecked) {
 TEST(Simulator, EllipsoidDepthIsExact) {
   // The teddy-like object's body (centre (0, 0, 1), radii y 0.18) seen level from 1 m away.
   const auto scene = makeScene("object", false);
-  const SimCamera cam;
+  const hrgbd::PinholeCamera cam;
   const auto pose = lookAt(Eigen::Vector3d(0, -1.0, 1.0), Eigen::Vector3d(0, 0, 1.0));
   const auto f = renderIdeal(scene, pose, cam);
   EXPECT_NEAR(f.depth.at<float>(240, 320), 1.0 - 0.18, 1e-3);
@@ -129,7 +129,7 @@ TEST(Simulator, EllipsoidDepthIsExact) {
 
 TEST(Simulator, RollingShutterSeesEachRowFromItsOwnPose) {
   const auto scene = makeScene("desk", false);
-  const SimCamera cam;
+  const hrgbd::PinholeCamera cam;
   const auto first = lookAt(Eigen::Vector3d(0, 0.0, 1.2), Eigen::Vector3d(0, 1.3, 0.75));
   const auto last = first + mrpt::poses::CPose3D(0.02, 0, 0, mrpt::DEG2RAD(2.0), 0, 0);
   const auto skewed = renderIdeal(scene, first, cam, last);

@@ -1,4 +1,4 @@
-#include "rgbd_io/Trajectory.h"
+#include "rgbd_core/Trajectory.h"
 
 #include <mrpt/math/TPoint3D.h>
 

@@ -4,7 +4,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "TestData.h"
-#include "rgbd_io/RgbdFrame.h"
+#include "rgbd_core/RgbdFrame.h"
 
 TEST(TumSource, RealFr1DeskFramesMatchPngOver5000) {
   HRGBD_REQUIRE_SHARED_DATA(data);

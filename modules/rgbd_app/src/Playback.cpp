@@ -10,35 +10,15 @@
 #include <iostream>
 
 #include "MapOutputs.h"
+#include "PlaybackSection.h"
+#include "rgbd_core/Config.h"
 #include "rgbd_eval/EvalPlot.h"
 #include "rgbd_eval/Evaluate.h"
-#include "rgbd_io/Config.h"
 #include "rgbd_io/TumSource.h"
 #include "rgbd_io/openFrameSource.h"
 
 namespace hrgbd {
 namespace {
-
-// [Playback] section: where the default job reads and writes. Relative paths are relative to
-// the INI file's folder.
-struct PlaybackSection {
-  std::string input, trajectory = "trajectory.txt", csv;
-  MapOutputPaths outputs;
-  void load(const mrpt::config::CConfigFileBase& c, const std::string& base) {
-    rejectUnknownKeys(
-        c, "Playback",
-        {"input", "trajectory", "csv", "output_rawlog", "simplemap", "map_ply", "map_scene"});
-    auto path = [&](const std::string& key, const std::string& def) {
-      const auto v = c.read_string("Playback", key, def);
-      return v == "openni2" ? v : resolvePath(base, v);
-    };
-    input = path("input", "");
-    trajectory = c.keyExists("Playback", "trajectory") ? path("trajectory", "") : trajectory;
-    csv = path("csv", "");
-    outputs = {path("output_rawlog", ""), path("simplemap", ""), path("map_ply", ""),
-               path("map_scene", "")};
-  }
-};
 
 void writeCsvHeader(std::ostream& out) {
   out << "timestamp,status,path,orb_features,features,matches,inliers,scale_m,ms_prepare,"
@@ -61,49 +41,6 @@ void progressBar(std::ostream& err, std::size_t n, std::size_t registered, doubl
 }
 
 }  // namespace
-
-const std::vector<std::string>& knownConfigSections() {
-  static const std::vector<std::string> s{"Playback", "Odometry",  "ORB", "Geometric",
-                                          "MSSE",     "RANSAC",    "ICP", "TumSource",
-                                          "OpenNI2",  "Benchmark", "Map"};
-  return s;
-}
-
-void rejectUnknownSections(const mrpt::config::CConfigFileBase& cfg) {
-  std::vector<std::string> sections;
-  cfg.getAllSections(sections);
-  const auto& known = knownConfigSections();
-  for (const auto& s : sections)
-    if (!s.empty() && std::find(known.begin(), known.end(), s) == known.end())
-      throw ConfigError("unknown INI section [" + s + "]");
-}
-
-std::unique_ptr<mrpt::config::CConfigFileBase> loadChecked(const std::string& file) {
-  std::unique_ptr<mrpt::config::CConfigFileBase> cfg =
-      file.empty() ? std::make_unique<mrpt::config::CConfigFileMemory>() : loadIniFile(file);
-  rejectUnknownSections(*cfg);
-  return cfg;
-}
-
-std::string effectiveConfig(const std::string& config_file) {
-  const auto cfg = loadChecked(config_file);
-  PlaybackSection pb;
-  pb.load(*cfg, ".");  // rejects unknown [Playback] keys; the paths are printed as written
-  OdometryParams odo;
-  loadStrict(odo, *cfg, "Odometry");
-  TumSourceParams tum;
-  loadStrict(tum, *cfg, "TumSource");
-  mrpt::config::CConfigFileMemory out;
-  for (const auto& key :
-       {"input", "trajectory", "csv", "output_rawlog", "simplemap", "map_ply", "map_scene"})
-    out.write("Playback", key, cfg->read_string("Playback", key, ""));
-  odo.saveToConfigFile(out, "Odometry");
-  MapParams map;
-  loadStrict(map, *cfg, "Map");
-  map.saveToConfigFile(out, "Map");
-  tum.saveToConfigFile(out, "TumSource");
-  return out.getContent();
-}
 
 PlaybackSummary runPlayback(const PlaybackOptions& opt, std::ostream& log) {
   const auto cfg = loadChecked(opt.config);

@@ -9,7 +9,7 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "rgbd_io/TimeAssociation.h"
+#include "rgbd_core/TimeAssociation.h"
 
 namespace hrgbd {
 namespace {

@@ -9,7 +9,7 @@
 #include <stdexcept>
 
 #include "ReadGuards.h"
-#include "rgbd_io/ErrorText.h"
+#include "rgbd_core/ErrorText.h"
 
 namespace hrgbd {
 namespace {

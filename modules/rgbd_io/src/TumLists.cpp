@@ -5,7 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "rgbd_io/TimeAssociation.h"
+#include "rgbd_core/TimeAssociation.h"
 
 namespace hrgbd {
 

@@ -7,9 +7,9 @@
 #include <opencv2/imgcodecs.hpp>
 #include <stdexcept>
 
-#include "rgbd_io/Config.h"
-#include "rgbd_io/Intrinsics.h"
-#include "rgbd_io/RgbdFrame.h"
+#include "rgbd_core/Config.h"
+#include "rgbd_core/Intrinsics.h"
+#include "rgbd_core/RgbdFrame.h"
 
 namespace hrgbd {
 

@@ -2,7 +2,7 @@
 
 #include <mrpt/system/filesystem.h>
 
-#include "rgbd_io/Config.h"
+#include "rgbd_core/Config.h"
 #include "rgbd_io/OpenNI2Source.h"
 #include "rgbd_io/RawlogSource.h"
 #include "rgbd_io/TumSource.h"

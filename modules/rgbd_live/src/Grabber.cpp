@@ -2,7 +2,7 @@
 
 #include <chrono>
 
-#include "rgbd_io/RgbdFrame.h"
+#include "rgbd_core/RgbdFrame.h"
 
 namespace hrgbd {
 

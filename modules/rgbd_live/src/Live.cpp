@@ -5,8 +5,8 @@
 #include <thread>
 
 #include "rgbd_app/Playback.h"
-#include "rgbd_io/Config.h"
-#include "rgbd_io/Trajectory.h"
+#include "rgbd_core/Config.h"
+#include "rgbd_core/Trajectory.h"
 #include "rgbd_io/openFrameSource.h"
 #include "rgbd_live/Grabber.h"
 #include "rgbd_live/LiveViewer.h"

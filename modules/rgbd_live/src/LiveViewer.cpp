@@ -9,7 +9,7 @@
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
 
-#include "rgbd_odometry/RgbdImage.h"
+#include "rgbd_core/RgbdImage.h"
 
 namespace hrgbd {
 

@@ -9,9 +9,9 @@
 #include <fstream>
 #include <stdexcept>
 
-#include "rgbd_io/Config.h"
-#include "rgbd_io/Trajectory.h"
-#include "rgbd_odometry/RgbdImage.h"
+#include "rgbd_core/Config.h"
+#include "rgbd_core/RgbdImage.h"
+#include "rgbd_core/Trajectory.h"
 
 namespace hrgbd {
 

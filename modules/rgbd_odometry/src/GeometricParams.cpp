@@ -1,6 +1,6 @@
 #include "rgbd_odometry/GeometricParams.h"
 
-#include "rgbd_io/Config.h"
+#include "rgbd_core/Config.h"
 
 namespace hrgbd {
 

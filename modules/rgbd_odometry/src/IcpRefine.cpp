@@ -7,7 +7,7 @@
 
 #include <cmath>
 
-#include "rgbd_io/Config.h"
+#include "rgbd_core/Config.h"
 
 namespace hrgbd {
 namespace {

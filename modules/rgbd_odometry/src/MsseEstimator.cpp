@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "rgbd_io/Config.h"
+#include "rgbd_core/Config.h"
 
 namespace hrgbd {
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <opencv2/features2d.hpp>
 
-#include "rgbd_io/Config.h"
+#include "rgbd_core/Config.h"
 
 namespace hrgbd {
 

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "rgbd_io/Config.h"
+#include "rgbd_core/Config.h"
 
 namespace hrgbd {
 

@@ -1,6 +1,6 @@
 #include <mrpt/config/CConfigFileBase.h>
 
-#include "rgbd_io/Config.h"
+#include "rgbd_core/Config.h"
 #include "rgbd_sim/Render.h"
 
 namespace hrgbd::sim {

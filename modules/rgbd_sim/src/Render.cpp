@@ -18,7 +18,8 @@ struct QuadData {
 
 }  // namespace
 
-IdealFrame renderIdeal(const Scene& scene, const mrpt::poses::CPose3D& pose, const SimCamera& cam,
+IdealFrame renderIdeal(const Scene& scene, const mrpt::poses::CPose3D& pose,
+                       const PinholeCamera& cam,
                        const std::optional<mrpt::poses::CPose3D>& last_row_pose) {
   std::vector<QuadData> qs;
   for (const auto& q : scene.quads)
@@ -105,7 +106,7 @@ IdealFrame renderIdeal(const Scene& scene, const mrpt::poses::CPose3D& pose, con
   return f;
 }
 
-void applyKinectModel(const IdealFrame& ideal, const Scene& /*scene*/, const SimCamera& cam,
+void applyKinectModel(const IdealFrame& ideal, const Scene& /*scene*/, const PinholeCamera& cam,
                       const mrpt::poses::CPose3D& pose, const mrpt::poses::CPose3D& previous_pose,
                       double gain, const KinectModel& m, double depth_factor, std::mt19937& rng,
                       cv::Mat& bgr, cv::Mat& depth_raw) {

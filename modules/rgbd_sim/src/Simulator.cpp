@@ -11,10 +11,10 @@
 #include <opencv2/imgcodecs.hpp>
 #include <sstream>
 
-#include "rgbd_io/Config.h"
-#include "rgbd_io/Intrinsics.h"
+#include "rgbd_core/Config.h"
+#include "rgbd_core/Intrinsics.h"
+#include "rgbd_core/RgbdFrame.h"
 #include "rgbd_io/RawlogSource.h"
-#include "rgbd_io/RgbdFrame.h"
 
 namespace hrgbd::sim {
 
@@ -138,7 +138,7 @@ Eigen::Vector3d lookedAtPoint(const Trajectory& path, double distance) {
 
 SimResult simulate(const SimParams& p, const SimOutputs& outputs) {
   const auto scene = makeScene(p.scene, p.far);
-  const SimCamera cam;
+  const PinholeCamera cam;
   const auto camera = pinholeCamera(cam.fx, cam.fy, cam.cx, cam.cy, cam.width, cam.height);
   constexpr double kDepthFactor = 5000;  // TUM's convention: PNG value / 5000 = metres
   constexpr double kStart = 1000.0;      // [s] time stamp of the first frame

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "rgbd_app/AppConfig.h"
 #include "rgbd_eval/Evaluate.h"
 #include "rgbd_odometry/RgbdOdometry.h"
 
@@ -39,18 +40,6 @@ struct PlaybackSummary {
   double median_ms = 0, p95_ms = 0;
   std::size_t map_points = 0;  //!< points in the coloured map (when a map output was asked)
 };
-
-/** INI sections this project knows; any other section in a config file is an error. */
-const std::vector<std::string>& knownConfigSections();
-
-/** Throws ConfigError if `cfg` has a section not in knownConfigSections(). */
-void rejectUnknownSections(const mrpt::config::CConfigFileBase& cfg);
-
-/** Loads `file` ("" = built-in defaults) and rejects unknown sections (ConfigError). */
-std::unique_ptr<mrpt::config::CConfigFileBase> loadChecked(const std::string& file);
-
-/** The effective configuration (defaults + `config_file`, "" for defaults) as INI text. */
-std::string effectiveConfig(const std::string& config_file);
 
 /** Runs the whole job; progress and results are written to `log`. Throws on bad configuration
  * or unreadable input; frames that cannot be registered are flagged in the results. The

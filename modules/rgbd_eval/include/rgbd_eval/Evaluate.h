@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "rgbd_io/Trajectory.h"
+#include "rgbd_core/Trajectory.h"
 
 namespace hrgbd {
 

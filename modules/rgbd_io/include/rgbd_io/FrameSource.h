@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <string>
 
-#include "rgbd_io/Trajectory.h"
+#include "rgbd_core/Trajectory.h"
 
 namespace hrgbd {
 

@@ -2,10 +2,10 @@
 /** \file GeometricFeatures.h
  * The geometric path's features (paper III-C to III-F, Algorithm 2 lines 5-10): down-sampled
  * cloud, normals, IS3D points, SHOT descriptors. */
+#include "rgbd_core/RgbdImage.h"
 #include "rgbd_odometry/GeometricParams.h"
 #include "rgbd_odometry/OrbFeatures.h"
 #include "rgbd_odometry/PointCloud.h"
-#include "rgbd_odometry/RgbdImage.h"
 
 namespace hrgbd {
 

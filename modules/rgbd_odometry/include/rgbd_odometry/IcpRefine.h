@@ -5,7 +5,7 @@
 
 #include <Eigen/Geometry>
 
-#include "rgbd_odometry/RgbdImage.h"
+#include "rgbd_core/RgbdImage.h"
 #include "rgbd_odometry/RigidFit.h"
 
 namespace hrgbd {

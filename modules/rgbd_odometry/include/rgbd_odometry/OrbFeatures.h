@@ -7,7 +7,7 @@
 #include <opencv2/core.hpp>
 #include <vector>
 
-#include "rgbd_odometry/RgbdImage.h"
+#include "rgbd_core/RgbdImage.h"
 
 namespace hrgbd {
 

@@ -7,8 +7,8 @@
 #include <utility>
 #include <vector>
 
+#include "rgbd_core/RgbdImage.h"
 #include "rgbd_odometry/GeometricParams.h"
-#include "rgbd_odometry/RgbdImage.h"
 
 namespace hrgbd {
 

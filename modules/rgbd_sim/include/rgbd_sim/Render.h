@@ -11,16 +11,11 @@
 #include <string>
 #include <vector>
 
-#include "rgbd_io/Trajectory.h"
+#include "rgbd_core/PinholeCamera.h"
+#include "rgbd_core/Trajectory.h"
 #include "rgbd_sim/Scene.h"
 
 namespace hrgbd::sim {
-
-/** Pinhole camera of the simulated sensor [px]. */
-struct SimCamera {
-  int width = 640, height = 480;
-  double fx = 525, fy = 525, cx = 319.5, cy = 239.5;
-};
 
 /** A noise-free render. */
 struct IdealFrame {
@@ -32,7 +27,8 @@ struct IdealFrame {
 /** Ray-casts `scene` from `pose` (optical frame in the world: z forward, x right, y down). With
  * `last_row_pose`, a rolling shutter: row v is seen from the pose interpolated between `pose`
  * (row 0) and `last_row_pose` (last row). */
-IdealFrame renderIdeal(const Scene& scene, const mrpt::poses::CPose3D& pose, const SimCamera& cam,
+IdealFrame renderIdeal(const Scene& scene, const mrpt::poses::CPose3D& pose,
+                       const PinholeCamera& cam,
                        const std::optional<mrpt::poses::CPose3D>& last_row_pose = std::nullopt);
 
 /** Kinect (structured light) parameters. INI section [Simulator], the key is the field name. */
@@ -72,7 +68,7 @@ struct KinectModel : public mrpt::config::CLoadableOptions {
 
 /** Applies the sensor model. `previous_pose` (pose `exposure_ms` earlier) sets the motion blur.
  * Returns 8-bit BGR colour and 16-bit depth in units of 1/`depth_factor` m. */
-void applyKinectModel(const IdealFrame& ideal, const Scene& scene, const SimCamera& cam,
+void applyKinectModel(const IdealFrame& ideal, const Scene& scene, const PinholeCamera& cam,
                       const mrpt::poses::CPose3D& pose, const mrpt::poses::CPose3D& previous_pose,
                       double gain, const KinectModel& model, double depth_factor, std::mt19937& rng,
                       cv::Mat& bgr, cv::Mat& depth_raw);

@@ -6,8 +6,8 @@
 
 #include <string>
 
+#include "rgbd_core/Trajectory.h"
 #include "rgbd_io/RawlogWriter.h"
-#include "rgbd_io/Trajectory.h"
 #include "rgbd_sim/Render.h"
 
 namespace hrgbd::sim {

@@ -1,4 +1,4 @@
-#include "rgbd_io/ErrorText.h"
+#include "rgbd_core/ErrorText.h"
 
 #include <mrpt/system/string_utils.h>
 

@@ -1,4 +1,4 @@
-#include "rgbd_io/Config.h"
+#include "rgbd_core/Config.h"
 
 #include <mrpt/config/CConfigFile.h>
 #include <mrpt/config/CConfigFileMemory.h>
@@ -13,7 +13,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "rgbd_io/ErrorText.h"
+#include "rgbd_core/ErrorText.h"
 
 namespace hrgbd {
 

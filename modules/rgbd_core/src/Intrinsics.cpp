@@ -1,4 +1,4 @@
-#include "rgbd_io/Intrinsics.h"
+#include "rgbd_core/Intrinsics.h"
 
 #include <algorithm>
 #include <regex>

@@ -3,19 +3,11 @@
  * A frame prepared for registration: grey image, depth registered to it, pinhole intrinsics. */
 #include <mrpt/obs/CObservation3DRangeScan.h>
 
-#include <Eigen/Core>
 #include <opencv2/core.hpp>
 
-namespace hrgbd {
+#include "rgbd_core/PinholeCamera.h"
 
-/** Pinhole intrinsics of the colour camera [px]. */
-struct PinholeCamera {
-  double fx = 525, fy = 525, cx = 319.5, cy = 239.5;
-  /** Paper eqs. (1)-(2): pixel (u, v) at depth z [m] -> point in the optical frame [m]. */
-  Eigen::Vector3d backProject(double u, double v, double z) const {
-    return {(u - cx) * z / fx, (v - cy) * z / fy, z};
-  }
-};
+namespace hrgbd {
 
 /** Grey image (CV_8UC1), depth in metres registered to it (CV_32FC1, 0 = unknown), camera. */
 struct RgbdImage {

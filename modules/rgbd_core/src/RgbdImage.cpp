@@ -1,16 +1,16 @@
-#include "rgbd_odometry/RgbdImage.h"
+#include "rgbd_core/RgbdImage.h"
 
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
 
-#include "rgbd_io/RgbdFrame.h"
+#include "rgbd_core/RgbdFrame.h"
 
 namespace hrgbd {
 namespace {
 
 PinholeCamera toPinhole(const mrpt::img::TCamera& c, const char* which) {
-  PinholeCamera p{c.fx(), c.fy(), c.cx(), c.cy()};
+  PinholeCamera p{c.fx(), c.fy(), c.cx(), c.cy(), int(c.ncols), int(c.nrows)};
   for (double v : {p.fx, p.fy, p.cx, p.cy})
     if (!std::isfinite(v))
       throw std::invalid_argument(std::string(which) + " intrinsics are not finite");

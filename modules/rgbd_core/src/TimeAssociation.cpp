@@ -1,4 +1,4 @@
-#include "rgbd_io/TimeAssociation.h"
+#include "rgbd_core/TimeAssociation.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "rgbd_io/RgbdFrame.h"
+#include "rgbd_core/RgbdFrame.h"
 
 #include <mrpt/system/datetime.h>
 
