@@ -77,7 +77,7 @@ void BM_Ransac(benchmark::State& s) {  // the baseline estimator, same data, sam
 void twoFrames(benchmark::State& s, const char* method,
                const mrpt::obs::CObservation3DRangeScan::Ptr (&obs)[2]) {
   OdometryParams p;
-  p.method = method;
+  p.method = parseMethod(method);
   for (auto _ : s) {
     RgbdOdometry odo(p);
     odo.processObservation(*obs[0]);

@@ -63,7 +63,7 @@ TEST(RealOdometry, Fr2PairRegistersWithSaneInliers) {
   const auto dir = data + "/real/slambook_fr2_pair/";
   const auto cam = hrgbd::intrinsicsPreset("fr2");
   hrgbd::OdometryParams p;
-  p.method = "rgb_only";
+  p.method = hrgbd::Method::RgbOnly;
   hrgbd::RgbdOdometry odo(p);
   hrgbd::FrameResult r;
   for (int i = 1; i <= 2; ++i) {

@@ -51,7 +51,7 @@ TEST(RgbdOdometry, BadFramesAreFlaggedAndTrackingRecovers) {
 TEST(RgbdOdometry, HoldPolicyKeepsThePoseOfTheLastFrame) {
   const auto frames = bundledFrames();
   hrgbd::OdometryParams p;
-  p.on_failure = "hold";
+  p.on_failure = hrgbd::FailurePolicy::Hold;
   hrgbd::RgbdOdometry odo(p);
   odo.processObservation(*frames[0]);
   const auto good = odo.processObservation(*frames[1]);
@@ -64,7 +64,7 @@ TEST(RgbdOdometry, HoldPolicyKeepsThePoseOfTheLastFrame) {
 TEST(RgbdOdometry, DepthOnlyAlwaysTakesTheGeometricPath) {
   const auto frames = bundledFrames();
   hrgbd::OdometryParams p;
-  p.method = "depth_only";
+  p.method = hrgbd::Method::DepthOnly;
   hrgbd::RgbdOdometry odo(p);
   const auto first = odo.processObservation(*frames[0]);
   EXPECT_EQ(first.path, "geometric");
@@ -109,12 +109,12 @@ TEST(RgbdOdometry, OpenCvPeersRunOnTheSameFrames) {
   // frame 0 -> 1 of the bundled desk, compared with our rgb_only estimate of the same step.
   const auto frames = bundledFrames();
   hrgbd::OdometryParams p;
-  p.method = "rgb_only";
+  p.method = hrgbd::Method::RgbOnly;
   hrgbd::RgbdOdometry ours(p);
   ours.processObservation(*frames[0]);
   const auto reference = ours.processObservation(*frames[1]).pose;
   for (const char* peer : {"opencv_rgbd", "opencv_icp", "opencv_rgbd_icp"}) {
-    p.method = peer;
+    p.method = hrgbd::parseMethod(peer);
     hrgbd::RgbdOdometry odo(p);
     EXPECT_EQ(odo.processObservation(*frames[0]).path, "dense");
     const auto r = odo.processObservation(*frames[1]);

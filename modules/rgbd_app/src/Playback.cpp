@@ -50,18 +50,18 @@ PlaybackSummary runPlayback(const PlaybackOptions& opt, std::ostream& log) {
   if (!opt.ini_outputs) pb.csv.clear(), pb.outputs = {};
   OdometryParams params;
   loadStrict(params, *cfg, "Odometry");
-  if (!opt.method.empty()) params.method = opt.method;
+  if (!opt.method.empty()) params.method = parseMethod(opt.method);
   RgbdOdometry odometry(params);
 
   const auto input = opt.input.empty() ? pb.input : opt.input;
   if (input.empty()) throw ConfigError("no input: give --input or [Playback] input");
   auto source = openFrameSource(input, *cfg);
-  log << "input: " << source->describe() << "\nmethod: " << params.method << "\n";
+  log << "input: " << source->describe() << "\nmethod: " << toString(params.method) << "\n";
 
   const auto traj_path = opt.trajectory.empty() ? pb.trajectory : opt.trajectory;
   std::ofstream traj(traj_path);
   if (!traj) throw std::runtime_error("cannot write trajectory '" + traj_path + "'");
-  traj << "# hybrid-rgbd-odometry " << params.method
+  traj << "# hybrid-rgbd-odometry " << toString(params.method)
        << ": timestamp tx ty tz qx qy qz qw (optical frame of the first camera)\n";
   const auto csv_path = opt.csv.empty() ? pb.csv : opt.csv;
   std::ofstream csv;
@@ -121,7 +121,8 @@ PlaybackSummary runPlayback(const PlaybackOptions& opt, std::ostream& log) {
       sum.evaluated = true;
       sum.eval = e;
       log << "evaluation against ground truth:\n" << toText(e);
-      if (!opt.plot.empty()) plotEvaluation(e, opt.plot, input + " (" + params.method + ")");
+      if (!opt.plot.empty())
+        plotEvaluation(e, opt.plot, input + " (" + toString(params.method) + ")");
     } catch (const std::exception& ex) {
       log << "evaluation skipped: " << ex.what() << "\n";
     }

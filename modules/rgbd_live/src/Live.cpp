@@ -40,7 +40,7 @@ void runLive(const LiveOptions& opt, std::ostream& log) {
   loadStrict(map_params, *cfg, "Map");
   RgbdOdometry odometry(params);
   auto source = openFrameSource(opt.input, *cfg);  // throws "no OpenNI2 sensor ..." clearly
-  log << "input: " << source->describe() << "\nmethod: " << params.method << std::endl;
+  log << "input: " << source->describe() << "\nmethod: " << toString(params.method) << std::endl;
   LiveViewer viewer("hybrid-rgbd-odometry live: " + opt.input);
   Grabber grabber(std::move(source), opt.input == "openni2", opt.rate);
 

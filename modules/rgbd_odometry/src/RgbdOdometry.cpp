@@ -77,10 +77,7 @@ const char* toString(FrameResult::Status s) {
 }
 
 RgbdOdometry::RgbdOdometry(const OdometryParams& params)
-    : m_params(params),
-      m_method(parseMethod(params.method)),
-      m_policy(params.on_failure == "hold" ? FailurePolicy::Hold
-                                           : FailurePolicy::ConstantVelocity) {}
+    : m_params(params), m_method(params.method), m_policy(params.on_failure) {}
 
 void RgbdOdometry::reset() {
   m_ref.reset();

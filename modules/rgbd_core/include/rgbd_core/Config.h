@@ -3,6 +3,7 @@
  * Strict INI loading helpers: MRPT's CLoadableOptions ignore unknown keys; ours reject them. */
 #include <mrpt/config/CConfigFileBase.h>
 #include <mrpt/config/CLoadableOptions.h>
+#include <mrpt/typemeta/TEnumType.h>
 
 #include <memory>
 #include <stdexcept>
@@ -34,6 +35,34 @@ std::string resolvePath(const std::string& base, const std::string& path);
  * `p.saveToConfigFile()` writes it; reals must be finite. Range checks stay in `p`'s loader. */
 void loadStrict(mrpt::config::CLoadableOptions& p, const mrpt::config::CConfigFileBase& cfg,
                 const std::string& section);
+
+/** Every name of an enum declared with MRPT_ENUM_TYPE_BEGIN / MRPT_FILL_ENUM_CUSTOM_NAME, in
+ * declaration order, joined by `sep`: the allowed values for INI files and command lines. */
+template <class E>
+std::string enumNames(const std::string& sep = "|") {
+  std::string out;
+  for (const auto& kv : mrpt::typemeta::TEnumType<E>::getBimap().m_k2v)
+    out += (out.empty() ? "" : sep) + kv.second;
+  return out;
+}
+
+/** The enum value named `name`; ConfigError "[section] key = 'name': must be a|b|c" otherwise
+ * (numbers are not accepted, unlike MRPT's read_enum). */
+template <class E>
+E parseEnum(const std::string& name, const std::string& section, const std::string& key) {
+  E v{};
+  if (!mrpt::typemeta::TEnumType<E>::getBimap().inverse(name, v))
+    throw ConfigError("[" + section + "] " + key + " = '" + name + "': must be " + enumNames<E>());
+  return v;
+}
+
+/** Reads `key` of `section` into `v` when the key is present (the first word of its value). */
+template <class E>
+void loadEnum(const mrpt::config::CConfigFileBase& c, const std::string& section,
+              const std::string& key, E& v) {
+  if (c.keyExists(section, key))
+    v = parseEnum<E>(c.read_string_first_word(section, key, ""), section, key);
+}
 
 /** Loads an INI file, throwing ConfigError if it is missing or unreadable. */
 std::unique_ptr<mrpt::config::CConfigFileBase> loadIniFile(const std::string& path);

@@ -25,18 +25,22 @@ enum class Method {
   OpencvIcp,      //!< cv::rgbd::ICPOdometry (point-to-plane on the depth)
   OpencvRgbdIcp,  //!< cv::rgbd::RgbdICPOdometry (both)
 };
-/** hybrid|rgb_only|depth_only|ransac|ransac_icp|opencv_rgbd|opencv_icp|opencv_rgbd_icp */
+/** The method named `name` (INI and command-line spelling, e.g. "rgb_only"); throws ConfigError
+ * listing the names otherwise. */
 Method parseMethod(const std::string& name);
-const char* toString(Method m);
+std::string toString(Method m);
 
 /** What to do with the pose of a frame that cannot be registered. */
-enum class FailurePolicy { ConstantVelocity, Hold };
+enum class FailurePolicy {
+  ConstantVelocity,  //!< the last registered motion is repeated
+  Hold,              //!< the pose stays where it was
+};
 
 /** Parameters of RgbdOdometry. INI section [Odometry]; the stages read [ORB], [Geometric],
  * [MSSE], [RANSAC] and [ICP]. */
 struct OdometryParams : public mrpt::config::CLoadableOptions {
-  std::string method = "hybrid";  //!< hybrid|rgb_only|depth_only|ransac|ransac_icp
-  int min_orb_features = 50;      //!< [count] fewer ORB features with depth -> geometric path
+  Method method = Method::Hybrid;
+  int min_orb_features = 50;  //!< [count] fewer ORB features with depth -> geometric path
   /** hybrid only: a photometric registration with fewer inliers is replaced by the geometric
    * path's when that registers (not in the paper; 0 = off). Measured: every good photometric
    * frame had >= 143 inliers, the far plain zig-zag's 9-26. */
@@ -49,7 +53,7 @@ struct OdometryParams : public mrpt::config::CLoadableOptions {
    * simulated zig-zag and fr3/cabinet), beyond what k_fraction = 0.5 survives. */
   double geometric_k_fraction = 0.2;
   int max_hamming_distance = 64;  //!< [bits] ORB pairs farther apart are never matched
-  std::string on_failure = "constant_velocity";  //!< constant_velocity|hold
+  FailurePolicy on_failure = FailurePolicy::ConstantVelocity;  //!< pose of unregistered frames
   double max_step_translation = 0.5;  //!< [m] larger frame-to-frame motion is flagged as failure
   double max_step_rotation_deg = 30;  //!< [deg] larger frame-to-frame rotation is flagged too
   OrbParams orb;
@@ -65,3 +69,19 @@ struct OdometryParams : public mrpt::config::CLoadableOptions {
 };
 
 }  // namespace hrgbd
+
+MRPT_ENUM_TYPE_BEGIN(hrgbd::Method)
+MRPT_FILL_ENUM_CUSTOM_NAME(hrgbd::Method::Hybrid, "hybrid");
+MRPT_FILL_ENUM_CUSTOM_NAME(hrgbd::Method::RgbOnly, "rgb_only");
+MRPT_FILL_ENUM_CUSTOM_NAME(hrgbd::Method::DepthOnly, "depth_only");
+MRPT_FILL_ENUM_CUSTOM_NAME(hrgbd::Method::Ransac, "ransac");
+MRPT_FILL_ENUM_CUSTOM_NAME(hrgbd::Method::RansacIcp, "ransac_icp");
+MRPT_FILL_ENUM_CUSTOM_NAME(hrgbd::Method::OpencvRgbd, "opencv_rgbd");
+MRPT_FILL_ENUM_CUSTOM_NAME(hrgbd::Method::OpencvIcp, "opencv_icp");
+MRPT_FILL_ENUM_CUSTOM_NAME(hrgbd::Method::OpencvRgbdIcp, "opencv_rgbd_icp");
+MRPT_ENUM_TYPE_END()
+
+MRPT_ENUM_TYPE_BEGIN(hrgbd::FailurePolicy)
+MRPT_FILL_ENUM_CUSTOM_NAME(hrgbd::FailurePolicy::ConstantVelocity, "constant_velocity");
+MRPT_FILL_ENUM_CUSTOM_NAME(hrgbd::FailurePolicy::Hold, "hold");
+MRPT_ENUM_TYPE_END()
