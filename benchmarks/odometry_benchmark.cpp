@@ -7,6 +7,7 @@
 
 #include <filesystem>
 
+#include "rgbd_baselines/RansacEstimator.h"
 #include "rgbd_io/RawlogSource.h"
 #include "rgbd_io/TumSource.h"
 #include "rgbd_odometry/DescriptorMatching.h"

@@ -1,6 +1,7 @@
 #pragma once
 // Where the tests find ../shared/data (the real TUM frames), and a skip when it is absent.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -16,9 +17,11 @@ inline std::string sharedDataDir() {
   return std::filesystem::is_directory(p) ? std::filesystem::canonical(p).string() : "";
 }
 
-/** A fresh, empty temporary folder for one test. */
+/** A fresh, empty temporary folder for one test, private to this process (two checkouts or two
+ * ctest runs on one machine never share it). */
 inline std::string tempDir(const std::string& name) {
-  const auto p = std::filesystem::temp_directory_path() / ("hrgbd_test_" + name);
+  const auto p = std::filesystem::temp_directory_path() /
+                 ("hrgbd_test_" + name + "_" + std::to_string(::getpid()));
   std::filesystem::remove_all(p);
   std::filesystem::create_directories(p);
   return p.string();

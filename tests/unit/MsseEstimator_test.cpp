@@ -3,7 +3,7 @@
 #include <cstdio>
 
 #include "TestData.h"
-#include "rgbd_odometry/RansacEstimator.h"
+#include "rgbd_baselines/RansacEstimator.h"
 #include "unit/SyntheticCorrespondences.h"
 
 using namespace hrgbd;

@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "PlaybackSection.h"
+#include "rgbd_baselines/Baselines.h"
 #include "rgbd_core/Config.h"
 #include "rgbd_io/TumSource.h"
 #include "rgbd_map/ColouredMap.h"
@@ -48,6 +49,9 @@ std::string effectiveConfig(const std::string& config_file) {
        {"input", "trajectory", "csv", "output_rawlog", "simplemap", "map_ply", "map_scene"})
     out.write("Playback", key, cfg->read_string("Playback", key, ""));
   odo.saveToConfigFile(out, "Odometry");
+  BaselineParams baselines;
+  loadStrict(baselines, *cfg, "RANSAC");
+  baselines.saveToConfigFile(out, "RANSAC");
   MapParams map;
   loadStrict(map, *cfg, "Map");
   map.saveToConfigFile(out, "Map");

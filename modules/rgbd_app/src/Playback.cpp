@@ -11,6 +11,7 @@
 
 #include "MapOutputs.h"
 #include "PlaybackSection.h"
+#include "rgbd_app/MakeOdometry.h"
 #include "rgbd_core/Config.h"
 #include "rgbd_eval/EvalPlot.h"
 #include "rgbd_eval/Evaluate.h"
@@ -29,9 +30,9 @@ void writeCsvHeader(std::ostream& out) {
 void writeCsvRow(std::ostream& out, const FrameResult& r) {
   out << std::fixed << std::setprecision(6) << r.t << "," << toString(r.status) << "," << r.path
       << "," << r.orb_features << "," << r.features << "," << r.matches << "," << r.inliers << ","
-      << std::setprecision(5) << r.scale << "," << std::setprecision(3) << r.ms_prepare << ","
-      << r.ms_features << "," << r.ms_matching << "," << r.ms_estimation << "," << r.ms_refine
-      << "," << r.ms_total << ",\"" << r.detail << "\"\n";
+      << std::setprecision(5) << r.scale << "," << std::setprecision(3) << r.ms.prepare << ","
+      << r.ms.features << "," << r.ms.matching << "," << r.ms.estimation << "," << r.ms.refine
+      << "," << r.ms.total << ",\"" << r.detail << "\"\n";
   out.flush();
 }
 
@@ -51,7 +52,7 @@ PlaybackSummary runPlayback(const PlaybackOptions& opt, std::ostream& log) {
   OdometryParams params;
   loadStrict(params, *cfg, "Odometry");
   if (!opt.method.empty()) params.method = parseMethod(opt.method);
-  RgbdOdometry odometry(params);
+  RgbdOdometry odometry = makeOdometry(params, *cfg);
 
   const auto input = opt.input.empty() ? pb.input : opt.input;
   if (input.empty()) throw ConfigError("no input: give --input or [Playback] input");
@@ -94,7 +95,7 @@ PlaybackSummary runPlayback(const PlaybackOptions& opt, std::ostream& log) {
     estimate.push_back({r.t, r.pose});
     sum.registered += r.registered();
     sum.results.push_back(r);
-    if (bar) progressBar(std::cerr, sum.results.size(), sum.registered, r.ms_total);
+    if (bar) progressBar(std::cerr, sum.results.size(), sum.registered, r.ms.total);
     if (opt.max_frames > 0 && sum.results.size() >= static_cast<std::size_t>(opt.max_frames)) break;
   }
   if (bar) std::cerr << "\n";
@@ -104,7 +105,7 @@ PlaybackSummary runPlayback(const PlaybackOptions& opt, std::ostream& log) {
                              " (" + std::to_string(source->stats().skipped_objects) +
                              " other objects skipped)");
   std::vector<double> ms;
-  for (const auto& r : sum.results) ms.push_back(r.ms_total);
+  for (const auto& r : sum.results) ms.push_back(r.ms.total);
   sum.median_ms = percentile(ms, 0.5);
   sum.p95_ms = percentile(ms, 0.95);
   log << "frames: " << sum.frames << ", registered: " << sum.registered

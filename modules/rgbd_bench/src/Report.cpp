@@ -91,8 +91,8 @@ MethodTotals totals(const BenchmarkReport& r, const std::string& method) {
   for (const auto& run : r.runs) {
     if (run.method != method) continue;
     for (const auto& f : run.summary.results) {
-      t.ms.push_back(f.ms_total);
-      t.ms_by_path[f.path].push_back(f.ms_total);
+      t.ms.push_back(f.ms.total);
+      t.ms_by_path[f.path].push_back(f.ms.total);
       ++t.frames;
       t.registered += f.registered();
     }

@@ -4,6 +4,7 @@
 #include <ostream>
 #include <thread>
 
+#include "rgbd_app/MakeOdometry.h"
 #include "rgbd_app/Playback.h"
 #include "rgbd_core/Config.h"
 #include "rgbd_core/Trajectory.h"
@@ -38,7 +39,7 @@ void runLive(const LiveOptions& opt, std::ostream& log) {
   loadStrict(params, *cfg, "Odometry");
   MapParams map_params;
   loadStrict(map_params, *cfg, "Map");
-  RgbdOdometry odometry(params);
+  RgbdOdometry odometry = makeOdometry(params, *cfg);
   auto source = openFrameSource(opt.input, *cfg);  // throws "no OpenNI2 sensor ..." clearly
   log << "input: " << source->describe() << "\nmethod: " << toString(params.method) << std::endl;
   LiveViewer viewer("hybrid-rgbd-odometry live: " + opt.input);

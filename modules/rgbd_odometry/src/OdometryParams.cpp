@@ -39,8 +39,6 @@ void OdometryParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
   orb.loadFromConfigFile(c, "ORB");
   geometric.loadFromConfigFile(c, "Geometric");
   msse.loadFromConfigFile(c, "MSSE");
-  ransac.loadFromConfigFile(c, "RANSAC");
-  icp.loadFromConfigFile(c, "ICP");
 }
 
 void OdometryParams::saveToConfigFile(mrpt::config::CConfigFileBase& c,
@@ -61,8 +59,6 @@ void OdometryParams::saveToConfigFile(mrpt::config::CConfigFileBase& c,
   orb.saveToConfigFile(c, "ORB");
   geometric.saveToConfigFile(c, "Geometric");
   msse.saveToConfigFile(c, "MSSE");
-  ransac.saveToConfigFile(c, "RANSAC");
-  icp.saveToConfigFile(c, "ICP");
 }
 
 }  // namespace hrgbd

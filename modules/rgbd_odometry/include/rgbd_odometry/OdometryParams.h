@@ -6,10 +6,8 @@
 #include <string>
 
 #include "rgbd_odometry/GeometricParams.h"
-#include "rgbd_odometry/IcpRefine.h"
 #include "rgbd_odometry/MsseEstimator.h"
 #include "rgbd_odometry/OrbFeatures.h"
-#include "rgbd_odometry/RansacEstimator.h"
 
 namespace hrgbd {
 
@@ -36,8 +34,8 @@ enum class FailurePolicy {
   Hold,              //!< the pose stays where it was
 };
 
-/** Parameters of RgbdOdometry. INI section [Odometry]; the stages read [ORB], [Geometric],
- * [MSSE], [RANSAC] and [ICP]. */
+/** Parameters of RgbdOdometry. INI section [Odometry]; the stages read [ORB], [Geometric] and
+ * [MSSE]. The baselines' [RANSAC] and [ICP] are BaselineParams (rgbd_baselines). */
 struct OdometryParams : public mrpt::config::CLoadableOptions {
   Method method = Method::Hybrid;
   int min_orb_features = 50;  //!< [count] fewer ORB features with depth -> geometric path
@@ -59,11 +57,8 @@ struct OdometryParams : public mrpt::config::CLoadableOptions {
   OrbParams orb;
   GeometricParams geometric;
   MsseParams msse;
-  RansacParams ransac;
-  IcpParams icp;
 
-  /** Loads [Odometry] from `s` and the stage sections [ORB], [Geometric], [MSSE], [RANSAC],
-   * [ICP]. */
+  /** Loads [Odometry] from `s` and the stage sections [ORB], [Geometric], [MSSE]. */
   void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
   void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
 };

@@ -1,4 +1,4 @@
-#include "rgbd_odometry/IcpRefine.h"
+#include "rgbd_baselines/IcpRefine.h"
 
 #include <mrpt/maps/CSimplePointsMap.h>
 #include <mrpt/poses/CPose3DPDF.h>

@@ -1,4 +1,4 @@
-#include "rgbd_odometry/RansacEstimator.h"
+#include "rgbd_baselines/RansacEstimator.h"
 
 #include <cmath>
 

@@ -1,0 +1,63 @@
+#pragma once
+/** \file FrameResult.h
+ * What the odometry reports for one frame, and the per-stage timing it carries. */
+#include <mrpt/poses/CPose3D.h>
+
+#include <Eigen/Core>
+#include <chrono>
+#include <string>
+#include <vector>
+
+namespace hrgbd {
+
+/** [ms] time spent per stage of one frame. */
+struct StageTimes {
+  double prepare = 0, features = 0, matching = 0, estimation = 0, refine = 0, total = 0;
+  StageTimes& operator+=(const StageTimes& o);
+};
+
+/** Runs `f()` and adds its duration [ms] to `acc`; returns what `f` returns. */
+template <class F>
+auto timed(double& acc, F&& f) {
+  const auto t0 = std::chrono::steady_clock::now();
+  struct Add {  // adds on every exit, also when f() throws
+    double& acc;
+    std::chrono::steady_clock::time_point t0;
+    ~Add() {
+      acc +=
+          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    }
+  } add{acc, t0};
+  return f();
+}
+
+/** Outcome of one frame. Poses are of the colour camera's optical frame in the first frame's
+ * optical frame (TUM convention). */
+struct FrameResult {
+  enum class Status {
+    FirstFrame,         //!< the reference; pose = identity
+    Ok,                 //!< registered
+    BadInput,           //!< no colour / depth / intrinsics (see `detail`); pose predicted
+    TooFewFeatures,     //!< too few features on the path used; pose predicted
+    TooFewMatches,      //!< pose predicted
+    DegenerateSamples,  //!< every 3-point sample degenerate; pose predicted
+    TooFewInliers,      //!< pose predicted
+    LargeResiduals,     //!< inlier noise scale implausible; pose predicted
+    ImplausibleMotion,  //!< estimate beyond max_step_*; pose predicted
+  };
+  double t = 0;  //!< [s]
+  mrpt::poses::CPose3D pose;
+  Status status = Status::FirstFrame;
+  std::string detail;                //!< human-readable reason when not Ok
+  std::string path = "photometric";  //!< photometric|geometric|dense (peers)|none
+  std::size_t orb_features = 0;      //!< ORB features with depth (what the hybrid switch counts)
+  std::size_t features = 0, matches = 0, inliers = 0;  //!< on the path used
+  double scale = 0;                                    //!< [m] estimator noise scale
+  /** [m] the current frame's inlier features (optical frame), for display; empty on failure */
+  std::vector<Eigen::Vector3f> inlier_points;
+  StageTimes ms;  //!< [ms] per stage
+  bool registered() const { return status == Status::Ok || status == Status::FirstFrame; }
+};
+const char* toString(FrameResult::Status s);
+
+}  // namespace hrgbd

@@ -1,0 +1,164 @@
+// The tracker's policies with a fake registration that returns scripted results: chaining
+// (eq. 8), the reference kept across failures, constant-velocity and hold predictions, the
+// plausibility limits, bad input and reset.
+#include <gtest/gtest.h>
+
+#include <deque>
+
+#include "rgbd_core/Config.h"
+#include "rgbd_core/Intrinsics.h"
+#include "rgbd_core/RgbdFrame.h"
+#include "rgbd_odometry/RgbdOdometry.h"
+
+using hrgbd::FrameResult;
+using Status = hrgbd::FrameResult::Status;
+
+namespace {
+
+// Returns the scripted results in order; records the time stamps of the frames it aligned.
+class FakeRegistration : public hrgbd::Registration {
+ public:
+  struct Log {
+    std::vector<std::pair<double, double>> aligned;  // (current t, reference t)
+    int prepared = 0;
+  };
+  FakeRegistration(std::deque<hrgbd::RegistrationResult> script, Log& log)
+      : m_script(std::move(script)), m_log(log) {}
+  hrgbd::FrameFeatures prepare(hrgbd::Frame&) override {
+    ++m_log.prepared;
+    return {"fake", 7, 7, {}};
+  }
+  hrgbd::RegistrationResult align(hrgbd::Frame& cur, hrgbd::Frame& ref) override {
+    m_log.aligned.emplace_back(cur.image.t, ref.image.t);
+    auto r = m_script.front();
+    m_script.pop_front();
+    return r;
+  }
+
+ private:
+  std::deque<hrgbd::RegistrationResult> m_script;
+  Log& m_log;
+};
+
+hrgbd::RegistrationResult step(double x, double yaw_deg = 0, Status s = Status::Ok) {
+  hrgbd::RegistrationResult r;
+  r.status = s;
+  r.T = Eigen::Translation3d(x, 0, 0) *
+        Eigen::AngleAxisd(yaw_deg * M_PI / 180, Eigen::Vector3d::UnitY());
+  r.detail = s == Status::Ok ? "" : "scripted failure";
+  return r;
+}
+
+// A small valid frame (64 x 48, flat wall at 1 m) at time t.
+mrpt::obs::CObservation3DRangeScan::Ptr frame(double t) {
+  const cv::Mat bgr(48, 64, CV_8UC3, cv::Scalar(90, 120, 150));
+  const cv::Mat depth(48, 64, CV_16UC1, cv::Scalar(5000));
+  return hrgbd::makeRgbdObservation(bgr, depth, 1.0 / 5000,
+                                    hrgbd::pinholeCamera(50, 50, 31.5, 23.5, 64, 48), t);
+}
+
+struct Run {
+  FakeRegistration::Log log;
+  std::vector<FrameResult> results;
+};
+
+Run track(const std::deque<hrgbd::RegistrationResult>& script, hrgbd::OdometryParams p = {}) {
+  Run run;
+  hrgbd::RgbdOdometry odo(p, std::make_unique<FakeRegistration>(script, run.log));
+  for (std::size_t i = 0; i <= script.size(); ++i)
+    run.results.push_back(odo.processObservation(*frame(100 + i)));
+  return run;
+}
+
+// Optical x of the pose (poses are optical frames in the first optical frame, TUM convention).
+double x(const FrameResult& r) { return r.pose.x(); }
+
+}  // namespace
+
+TEST(Tracker, ChainsEachStepOntoTheReference) {
+  const auto run = track({step(0.1), step(0.2, 10), step(0.05)});
+  ASSERT_EQ(run.results.size(), 4u);
+  EXPECT_EQ(run.results[0].status, Status::FirstFrame);
+  EXPECT_EQ(run.results[0].pose, mrpt::poses::CPose3D());
+  EXPECT_EQ(run.results[0].path, "fake");
+  EXPECT_EQ(run.results[0].features, 7u);
+  // G_n = G_ref T (eq. 8), the reference being the previous frame while every step registers.
+  const auto g1 = hrgbd::toPose(step(0.1).T);
+  const auto g2 = g1 + hrgbd::toPose(step(0.2, 10).T);
+  const auto g3 = g2 + hrgbd::toPose(step(0.05).T);
+  EXPECT_NEAR((run.results[1].pose - g1).norm(), 0, 1e-12);
+  EXPECT_NEAR((run.results[2].pose - g2).norm(), 0, 1e-12);
+  EXPECT_NEAR((run.results[3].pose - g3).norm(), 0, 1e-12);
+  EXPECT_EQ(run.log.prepared, 4);
+  const std::vector<std::pair<double, double>> pairs{{101, 100}, {102, 101}, {103, 102}};
+  EXPECT_EQ(run.log.aligned, pairs);
+}
+
+TEST(Tracker, FailedFramesArePredictedAtConstantVelocityAndKeepTheReference) {
+  const auto run = track({step(0.1), step(0, 0, Status::TooFewInliers), step(0.25)});
+  EXPECT_EQ(run.results[2].status, Status::TooFewInliers);
+  EXPECT_EQ(run.results[2].detail, "scripted failure");
+  EXPECT_NEAR(x(run.results[2]), 0.2, 1e-12);  // 0.1 + the last motion, 0.1
+  // Frame 103 registers against 101, the last registered frame, not the failed 102.
+  EXPECT_EQ(run.log.aligned.back(), std::make_pair(103.0, 101.0));
+  EXPECT_NEAR(x(run.results[3]), 0.35, 1e-12);  // 0.1 + 0.25 from frame 101
+}
+
+TEST(Tracker, HoldPolicyKeepsThePose) {
+  hrgbd::OdometryParams p;
+  p.on_failure = hrgbd::FailurePolicy::Hold;
+  const auto run = track({step(0.1), step(0, 0, Status::TooFewMatches)}, p);
+  EXPECT_EQ(run.results[2].status, Status::TooFewMatches);
+  EXPECT_EQ(run.results[2].pose, run.results[1].pose);
+}
+
+TEST(Tracker, ImplausibleStepsAreFlaggedNotChained) {
+  hrgbd::OdometryParams p;
+  p.max_step_translation = 0.3;
+  p.max_step_rotation_deg = 20;
+  const auto run = track({step(0.1), step(0.4), step(0.1, 25), step(0.29, 19)}, p);
+  EXPECT_EQ(run.results[1].status, Status::Ok);
+  EXPECT_EQ(run.results[2].status, Status::ImplausibleMotion);
+  EXPECT_NE(run.results[2].detail.find("0.4"), std::string::npos) << run.results[2].detail;
+  EXPECT_EQ(run.results[3].status, Status::ImplausibleMotion);  // 25 deg
+  EXPECT_EQ(run.results[4].status, Status::Ok);                 // just inside both limits
+  EXPECT_EQ(run.log.aligned.back(), std::make_pair(104.0, 101.0));
+}
+
+TEST(Tracker, BadInputIsFlaggedWithoutCallingTheRegistration) {
+  FakeRegistration::Log log;
+  hrgbd::RgbdOdometry odo(hrgbd::OdometryParams(),
+                          std::make_unique<FakeRegistration>(
+                              std::deque<hrgbd::RegistrationResult>{step(0.1), step(0.1)}, log));
+  odo.processObservation(*frame(100));
+  odo.processObservation(*frame(101));
+  auto no_depth = frame(102);
+  no_depth->hasRangeImage = false;
+  const auto bad = odo.processObservation(*no_depth);
+  EXPECT_EQ(bad.status, Status::BadInput);
+  EXPECT_EQ(bad.path, "none");
+  EXPECT_FALSE(bad.detail.empty());
+  EXPECT_EQ(log.prepared, 2);
+  EXPECT_EQ(log.aligned.size(), 1u);
+  EXPECT_NEAR(x(bad), 0.2, 1e-12);  // constant velocity
+}
+
+TEST(Tracker, ResetMakesTheNextFrameTheOrigin) {
+  FakeRegistration::Log log;
+  hrgbd::RgbdOdometry odo(
+      hrgbd::OdometryParams(),
+      std::make_unique<FakeRegistration>(std::deque<hrgbd::RegistrationResult>{step(0.1)}, log));
+  odo.processObservation(*frame(100));
+  odo.processObservation(*frame(101));
+  ASSERT_NE(odo.pose(), mrpt::poses::CPose3D());
+  odo.reset();
+  const auto r = odo.processObservation(*frame(102));
+  EXPECT_EQ(r.status, Status::FirstFrame);
+  EXPECT_EQ(r.pose, mrpt::poses::CPose3D());
+}
+
+TEST(Tracker, BaselineMethodsNeedTheBaselinesLibrary) {
+  hrgbd::OdometryParams p;
+  p.method = hrgbd::Method::Ransac;
+  EXPECT_THROW(hrgbd::RgbdOdometry{p}, hrgbd::ConfigError);
+}
