@@ -39,7 +39,7 @@ struct RowView {
   Eigen::Vector3d c;
 };
 
-/** Row v's view: `pose`, or with a rolling shutter the pose interpolated towards `last_row`. */
+/** Row v's view: `pose`, or with a rolling shutter interpolated towards `last_row_pose`. */
 RowView rowView(const mrpt::poses::CPose3D& pose,
                 const std::optional<mrpt::poses::CPose3D>& last_row_pose, int v,
                 const PinholeCamera& cam) {

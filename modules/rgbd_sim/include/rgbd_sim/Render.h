@@ -44,7 +44,7 @@ struct KinectModel : public mrpt::config::CLoadableOptions {
   int correlation_window = 9;
   /** [px] fixed-pattern disparity error of the sensor unit (std): smooth over the image and the
    * same in every frame, the residual distortion Kinect calibrations find. 0.3 px is ~1 % of
-   * the depth at 2 m; set with the realism check (README, Simulator). 0 = none. */
+   * the depth at 2 m; set with the realism check (doc/simulator.md). 0 = none. */
   double disparity_distortion = 0.3;
   /** [px] a farther surface this close to a nearer one takes the nearer one's depth (the block
    * matcher's window locks onto the foreground: objects look fatter). 0 = none. */
