@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Long run for memory stability (issue 8): renders N simulated desk frames (default 3000, 100 s
+# Long run for memory stability: renders N simulated desk frames (default 3000, 100 s
 # of hand-held sweep at 30 Hz) into a rawlog, plays it through hybrid odometry with the coloured
 # map on, samples the player's resident memory every second and reports peak RSS and RSS at each
 # quarter of the run. Usage: scripts/long-run.sh [frames] [work dir] [build dir]

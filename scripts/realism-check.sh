@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Realism check of the simulator (issue 3): OpenCV's dense peers and our hybrid odometry, frame to
-# frame, on the real TUM fr3/teddy frames and on simulated sequences that replay the same real
+# Realism check of the simulator: OpenCV's dense peers and our hybrid odometry, frame to frame,
+# on the real TUM fr3/teddy frames and on simulated sequences that replay the same real
 # motion: the desk scene and the teddy-like "object" scene; and the 9 real fr1/desk frames against
 # the desk scene replaying fr1/desk's motion. Prints the aligned ATE and RPE tables.
 # Usage: scripts/realism-check.sh [BUILD_DIR] [WORK_DIR]   (~4 min on 2 cores)

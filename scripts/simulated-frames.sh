@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The README's picture of the simulator: colour and depth of one frame (the 10th of a sweep) of
+# The picture in doc/simulator.md: colour and depth of one frame (the 10th of a sweep) of
 # every scene type. Needs ImageMagick. Usage: scripts/simulated-frames.sh [BUILD_DIR] [OUT.jpg]
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -43,10 +43,11 @@ TEST(Simulator, TwoFramesOverlapWithinTheNoiseLevel) {
   const hrgbd::PinholeCamera cam;
   const auto path = cameraPath(scene, p, {0.0, 0.5});
   std::mt19937 rng(3);
-  cv::Mat bgr[2], depth[2];
+  cv::Mat depth[2];
   for (int i = 0; i < 2; ++i)
-    applyKinectModel(renderIdeal(scene, path[i].pose, cam), scene, cam, path[i].pose, path[i].pose,
-                     1.0, p.sensor, 5000, rng, bgr[i], depth[i]);
+    depth[i] = applyKinectModel(renderIdeal(scene, path[i].pose, cam), cam,
+                                {path[i].pose, path[i].pose, 1.0, 5000}, p.sensor, rng)
+                   .depth;
   ASSERT_GT((path[1].pose - path[0].pose).norm(), 0.05);  // the camera really moved
 
   auto rel = depthAgreement(depth[0], path[0].pose, depth[1], path[1].pose, cam, 4);
@@ -73,9 +74,9 @@ TEST(Simulator, DepthIsQuantisedInDisparity) {
   const hrgbd::PinholeCamera cam;
   const auto pose = cameraPath(scene, p, {0.0})[0].pose;
   std::mt19937 rng(1);
-  cv::Mat bgr, depth;
-  applyKinectModel(renderIdeal(scene, pose, cam), scene, cam, pose, pose, 1.0, p.sensor, 5000, rng,
-                   bgr, depth);
+  const cv::Mat depth =
+      applyKinectModel(renderIdeal(scene, pose, cam), cam, {pose, pose, 1.0, 5000}, p.sensor, rng)
+          .depth;
   std::vector<uint16_t> values;
   for (int u = 0; u < cam.width; ++u)
     if (depth.at<uint16_t>(240, u)) values.push_back(depth.at<uint16_t>(240, u));

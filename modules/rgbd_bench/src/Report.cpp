@@ -128,7 +128,7 @@ std::string timingTable(const BenchmarkReport& r) {
   return out.str();
 }
 
-// The targets, computed from the runs; each line says met or missed with the figures.
+// The benchmark's targets, computed from the runs; each line says met or missed with the figures.
 std::string targets(const BenchmarkReport& r) {
   std::ostringstream out;
   const auto has = [&](const std::string& m) {

@@ -57,42 +57,51 @@ mrpt::poses::CPose3D lookAt(const Eigen::Vector3d& eye, const Eigen::Vector3d& t
       R, mrpt::math::TVector3D(eye.x(), eye.y(), eye.z()));
 }
 
-Trajectory cameraPath(const Scene& scene, const SimParams& p, const std::vector<double>& times) {
+namespace {
+
+// Slow sweep along the structure plus hand-held jitter (a few Hz, ~1 cm, ~0.5 deg).
+Trajectory sweepPath(const Scene& scene, int seed, const std::vector<double>& times) {
   const Eigen::Vector3d axis = scene.sweep_axis.normalized(), view = scene.view_dir.normalized();
   const double amp = 0.25 + 0.2 * scene.distance;  // [m] sweep amplitude
+  const double ph = 0.7 * seed;
   Trajectory out;
-  if (p.motion == "sweep") {
-    const double ph = 0.7 * p.seed;
-    for (double t : times) {
-      // Slow sweep along the structure plus hand-held jitter (a few Hz, ~1 cm, ~0.5 deg).
-      const double s = amp * std::sin(2 * M_PI * t / 8.0);
-      const Eigen::Vector3d jitter(0.006 * std::sin(2 * M_PI * 1.3 * t + ph),
-                                   0.005 * std::sin(2 * M_PI * 2.1 * t + 2 * ph),
-                                   0.004 * std::sin(2 * M_PI * 3.4 * t + 3 * ph));
-      const Eigen::Vector3d look_jitter(0.01 * std::sin(2 * M_PI * 0.9 * t + ph), 0,
-                                        0.01 * std::sin(2 * M_PI * 1.7 * t + ph));
-      const Eigen::Vector3d eye = scene.look_at + view * scene.distance + axis * s + jitter;
-      out.push_back({t, lookAt(eye, scene.look_at + axis * 0.8 * s + look_jitter)});
-    }
-    return out;
+  for (double t : times) {
+    const double s = amp * std::sin(2 * M_PI * t / 8.0);
+    const Eigen::Vector3d jitter(0.006 * std::sin(2 * M_PI * 1.3 * t + ph),
+                                 0.005 * std::sin(2 * M_PI * 2.1 * t + 2 * ph),
+                                 0.004 * std::sin(2 * M_PI * 3.4 * t + 3 * ph));
+    const Eigen::Vector3d look_jitter(0.01 * std::sin(2 * M_PI * 0.9 * t + ph), 0,
+                                      0.01 * std::sin(2 * M_PI * 1.7 * t + ph));
+    const Eigen::Vector3d eye = scene.look_at + view * scene.distance + axis * s + jitter;
+    out.push_back({t, lookAt(eye, scene.look_at + axis * 0.8 * s + look_jitter)});
   }
-  // Replay: the real trajectory, moved by a rotation about the vertical and a translation (TUM
-  // ground truth has z up, as the scene) so that the point the real camera looked at maps onto
-  // the scene's look_at and the camera stays on the side of view_dir. Camera height above that
-  // point, distance to it, tilt and roll stay the real ones.
-  const auto real = loadTumTrajectory(p.motion);
-  if (real.size() < 2) throw std::runtime_error("motion file '" + p.motion + "' has < 2 poses");
+  return out;
+}
+
+/** The poses of the TUM trajectory `file` up to 0.1 s past the last of `times`, time stamps
+ * made relative to its first. Throws when it is shorter than `times`. */
+Trajectory loadMotion(const std::string& file, const std::vector<double>& times) {
+  const auto real = loadTumTrajectory(file);
+  if (real.size() < 2) throw std::runtime_error("motion file '" + file + "' has < 2 poses");
   const double span = real.back().t - real[0].t,
                last = *std::max_element(times.begin(), times.end());
   if (last > span)
-    throw std::runtime_error("motion file '" + p.motion + "' covers only " + std::to_string(span) +
+    throw std::runtime_error("motion file '" + file + "' covers only " + std::to_string(span) +
                              " s");
   Trajectory used;
   for (const auto& q : real)
-    if (q.t - real[0].t <= last + 0.1) used.push_back(q);
-  const Eigen::Vector3d target = lookedAtPoint(used, scene.distance);
+    if (q.t - real[0].t <= last + 0.1) used.push_back({q.t - real[0].t, q.pose});
+  return used;
+}
+
+/** The rotation about the vertical and translation (TUM ground truth has z up, as the scene)
+ * that move the point `path` looked at onto the scene's look_at, with the cameras on the side
+ * of view_dir. */
+mrpt::poses::CPose3D replayAnchor(const Scene& scene, const Trajectory& path) {
+  const Eigen::Vector3d view = scene.view_dir.normalized();
+  const Eigen::Vector3d target = lookedAtPoint(path, scene.distance);
   Eigen::Vector2d away(0, 0);  // mean horizontal direction from the target to the camera
-  for (const auto& q : used) {
+  for (const auto& q : path) {
     const Eigen::Vector2d h(q.pose.x() - target.x(), q.pose.y() - target.y());
     if (h.norm() > 1e-6) away += h.normalized();
   }
@@ -100,21 +109,35 @@ Trajectory cameraPath(const Scene& scene, const SimParams& p, const std::vector<
       std::atan2(view.y(), view.x()) - (away.norm() > 1e-6 ? std::atan2(away.y(), away.x()) : 0.0);
   const mrpt::poses::CPose3D turn(0, 0, 0, yaw, 0, 0);
   const auto moved = turn.composePoint({target.x(), target.y(), target.z()});
-  const mrpt::poses::CPose3D anchor =
-      mrpt::poses::CPose3D(scene.look_at.x() - moved.x, scene.look_at.y() - moved.y,
-                           scene.look_at.z() - moved.z, 0, 0, 0) +
-      turn;
+  return mrpt::poses::CPose3D(scene.look_at.x() - moved.x, scene.look_at.y() - moved.y,
+                              scene.look_at.z() - moved.z, 0, 0, 0) +
+         turn;
+}
+
+// Replay: the real trajectory, moved by replayAnchor(). Camera height above the looked-at point,
+// distance to it, tilt and roll stay the real ones.
+Trajectory replayPath(const Scene& scene, const std::string& file,
+                      const std::vector<double>& times) {
+  const Trajectory used = loadMotion(file, times);
+  const mrpt::poses::CPose3D anchor = replayAnchor(scene, used);
   mrpt::poses::CPose3DInterpolator interp;
-  for (const auto& q : used) interp.insert(mrpt::Clock::fromDouble(q.t - real[0].t), q.pose);
+  for (const auto& q : used) interp.insert(mrpt::Clock::fromDouble(q.t), q.pose);
+  Trajectory out;
   for (double t : times) {
     mrpt::poses::CPose3D pose;
     bool valid = false;
     interp.interpolate(mrpt::Clock::fromDouble(t), pose, valid);
     if (!valid)
-      throw std::runtime_error("cannot interpolate '" + p.motion + "' at " + std::to_string(t));
+      throw std::runtime_error("cannot interpolate '" + file + "' at " + std::to_string(t));
     out.push_back({t, anchor + pose});
   }
   return out;
+}
+
+}  // namespace
+
+Trajectory cameraPath(const Scene& scene, const SimParams& p, const std::vector<double>& times) {
+  return p.motion == "sweep" ? sweepPath(scene, p.seed, times) : replayPath(scene, p.motion, times);
 }
 
 Eigen::Vector3d lookedAtPoint(const Trajectory& path, double distance) {
@@ -136,15 +159,20 @@ Eigen::Vector3d lookedAtPoint(const Trajectory& path, double distance) {
   return A.ldlt().solve(b);
 }
 
-SimResult simulate(const SimParams& p, const SimOutputs& outputs) {
-  const auto scene = makeScene(p.scene, p.far);
-  const PinholeCamera cam;
-  const auto camera = pinholeCamera(cam.fx, cam.fy, cam.cx, cam.cy, cam.width, cam.height);
-  constexpr double kDepthFactor = 5000;  // TUM's convention: PNG value / 5000 = metres
-  constexpr double kStart = 1000.0;      // [s] time stamp of the first frame
+namespace {
 
-  // Poses at each frame time (the middle row), at the start of its exposure, and at its first
-  // and last rows' times (rolling shutter), in one call (one file load).
+constexpr double kDepthFactor = 5000;  // TUM's convention: PNG value / 5000 = metres
+constexpr double kStart = 1000.0;      // [s] time stamp of the first frame
+
+/** Camera poses of each frame: at the frame time (the middle row), at the start of its
+ * exposure, and at its first and last rows' times (rolling shutter). */
+struct FramePoses {
+  std::vector<double> times;  //!< [s] frame times from 0
+  Trajectory path, before, first_row, last_row;
+};
+
+FramePoses framePoses(const Scene& scene, const SimParams& p) {
+  // All four sets of times in one cameraPath() call (one file load).
   std::vector<double> times;
   const double exposure = p.sensor.exposure_ms * 1e-3, readout = p.sensor.rolling_shutter_ms * 1e-3;
   for (double offset : {0.0, -exposure, -readout / 2, readout / 2})
@@ -153,55 +181,102 @@ SimResult simulate(const SimParams& p, const SimOutputs& outputs) {
   auto part = [&](int k) {
     return Trajectory(poses.begin() + k * p.frames, poses.begin() + (k + 1) * p.frames);
   };
-  const Trajectory path = part(0), path_before = part(1), first_row = part(2), last_row = part(3);
+  times.resize(p.frames);
+  return {times, part(0), part(1), part(2), part(3)};
+}
 
-  std::unique_ptr<RawlogWriter> rawlog;
-  if (!outputs.rawlog.empty())
-    rawlog = std::make_unique<RawlogWriter>(outputs.rawlog, outputs.images, 9);
-  std::ofstream rgb_txt, depth_txt;
-  if (!outputs.tum_folder.empty()) {
-    std::filesystem::create_directories(outputs.tum_folder + "/rgb");
-    std::filesystem::create_directories(outputs.tum_folder + "/depth");
-    rgb_txt.open(outputs.tum_folder + "/rgb.txt");
-    depth_txt.open(outputs.tum_folder + "/depth.txt");
-    if (!rgb_txt || !depth_txt)
-      throw std::runtime_error("cannot write into '" + outputs.tum_folder + "'");
-    rgb_txt << "# color images\n# file: rgbd-simulate " << scene.name << "\n# timestamp filename\n";
-    depth_txt << "# depth maps\n# file: rgbd-simulate " << scene.name << "\n# timestamp filename\n";
+/** Frame i: the ideal render (row by row with a rolling shutter) through the sensor model. */
+SensorFrame renderFrame(const Scene& scene, const PinholeCamera& cam, const SimParams& p,
+                        const FramePoses& poses, int i, std::mt19937& rng) {
+  const double gain =
+      1.0 + p.sensor.auto_exposure * std::sin(2 * M_PI * poses.times[i] / 3.7 + p.seed);
+  const double readout = p.sensor.rolling_shutter_ms * 1e-3;
+  const auto ideal = readout > 0
+                         ? renderIdeal(scene, poses.first_row[i].pose, cam, poses.last_row[i].pose)
+                         : renderIdeal(scene, poses.path[i].pose, cam);
+  return applyKinectModel(
+      ideal, cam, {poses.path[i].pose, poses.before[i].pose, gain, kDepthFactor}, p.sensor, rng);
+}
+
+/** Writes the frames into the requested outputs: a rawlog and/or a TUM folder. */
+class SequenceWriter {
+ public:
+  SequenceWriter(const SimOutputs& outputs, const std::string& scene_name, const PinholeCamera& cam)
+      : m_outputs(outputs),
+        m_camera(pinholeCamera(cam.fx, cam.fy, cam.cx, cam.cy, cam.width, cam.height)) {
+    if (!outputs.rawlog.empty())
+      m_rawlog = std::make_unique<RawlogWriter>(outputs.rawlog, outputs.images, 9);
+    if (!outputs.tum_folder.empty()) openTumFolder(scene_name);
   }
 
+  /** Frame at time stamp t [s]. */
+  void write(double t, const SensorFrame& frame) {
+    if (m_rawlog)
+      m_rawlog->write(*makeRgbdObservation(frame.bgr, frame.depth, 1.0 / kDepthFactor, m_camera, t,
+                                           "RGBD_SIM"));
+    if (!m_rgb_txt.is_open()) return;
+    std::ostringstream name;
+    name << std::fixed << std::setprecision(6) << t << ".png";
+    cv::imwrite(m_outputs.tum_folder + "/rgb/" + name.str(), frame.bgr);
+    cv::imwrite(m_outputs.tum_folder + "/depth/" + name.str(), frame.depth);
+    m_rgb_txt << std::fixed << std::setprecision(6) << t << " rgb/" << name.str() << "\n";
+    m_depth_txt << std::fixed << std::setprecision(6) << t << " depth/" << name.str() << "\n";
+  }
+
+  /** Ground truth beside the rawlog and into the TUM folder. */
+  void finish(const Trajectory& ground_truth) {
+    if (m_rawlog) saveTumTrajectory(groundTruthPathFor(m_outputs.rawlog), ground_truth);
+    if (m_rgb_txt.is_open())
+      saveTumTrajectory(m_outputs.tum_folder + "/groundtruth.txt", ground_truth);
+  }
+
+ private:
+  void openTumFolder(const std::string& scene_name) {
+    const std::string& dir = m_outputs.tum_folder;
+    std::filesystem::create_directories(dir + "/rgb");
+    std::filesystem::create_directories(dir + "/depth");
+    m_rgb_txt.open(dir + "/rgb.txt");
+    m_depth_txt.open(dir + "/depth.txt");
+    if (!m_rgb_txt || !m_depth_txt) throw std::runtime_error("cannot write into '" + dir + "'");
+    m_rgb_txt << "# color images\n# file: rgbd-simulate " << scene_name
+              << "\n# timestamp filename\n";
+    m_depth_txt << "# depth maps\n# file: rgbd-simulate " << scene_name
+                << "\n# timestamp filename\n";
+  }
+
+  const SimOutputs& m_outputs;
+  mrpt::img::TCamera m_camera;
+  std::unique_ptr<RawlogWriter> m_rawlog;
+  std::ofstream m_rgb_txt, m_depth_txt;
+};
+
+double median(std::vector<double> v) {
+  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+  return v[v.size() / 2];
+}
+
+}  // namespace
+
+SimResult simulate(const SimParams& p, const SimOutputs& outputs) {
+  const auto scene = makeScene(p.scene, p.far);
+  const PinholeCamera cam;
+  const FramePoses poses = framePoses(scene, p);
+  SequenceWriter writer(outputs, scene.name, cam);
   std::mt19937 rng(static_cast<std::uint32_t>(p.seed));
   SimResult res;
   std::vector<double> ms;
   for (int i = 0; i < p.frames; ++i) {
     const auto t0 = std::chrono::steady_clock::now();
-    const double t = kStart + times[i];
-    const double gain = 1.0 + p.sensor.auto_exposure * std::sin(2 * M_PI * times[i] / 3.7 + p.seed);
-    cv::Mat bgr, depth;
-    const auto ideal = readout > 0 ? renderIdeal(scene, first_row[i].pose, cam, last_row[i].pose)
-                                   : renderIdeal(scene, path[i].pose, cam);
-    applyKinectModel(ideal, scene, cam, path[i].pose, path_before[i].pose, gain, p.sensor,
-                     kDepthFactor, rng, bgr, depth);
+    const SensorFrame frame = renderFrame(scene, cam, p, poses, i, rng);
     ms.push_back(
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
-    res.ground_truth.push_back({t, path[i].pose});
-    if (rawlog)
-      rawlog->write(*makeRgbdObservation(bgr, depth, 1.0 / kDepthFactor, camera, t, "RGBD_SIM"));
-    if (rgb_txt.is_open()) {
-      std::ostringstream name;
-      name << std::fixed << std::setprecision(6) << t << ".png";
-      cv::imwrite(outputs.tum_folder + "/rgb/" + name.str(), bgr);
-      cv::imwrite(outputs.tum_folder + "/depth/" + name.str(), depth);
-      rgb_txt << std::fixed << std::setprecision(6) << t << " rgb/" << name.str() << "\n";
-      depth_txt << std::fixed << std::setprecision(6) << t << " depth/" << name.str() << "\n";
-    }
+    const double t = kStart + poses.times[i];
+    res.ground_truth.push_back({t, poses.path[i].pose});
+    writer.write(t, frame);
   }
   res.frames = p.frames;
-  std::nth_element(ms.begin(), ms.begin() + ms.size() / 2, ms.end());
-  res.ms_per_frame = ms[ms.size() / 2];
-  if (rawlog) saveTumTrajectory(groundTruthPathFor(outputs.rawlog), res.ground_truth);
-  if (rgb_txt.is_open())
-    saveTumTrajectory(outputs.tum_folder + "/groundtruth.txt", res.ground_truth);
+  res.ms_per_frame = median(ms);
+  writer.finish(res.ground_truth);
   return res;
 }
 

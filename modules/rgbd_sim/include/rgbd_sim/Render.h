@@ -3,6 +3,7 @@
  * Ideal (noise-free) ray-cast rendering of a Scene, and the Kinect-like sensor model applied to
  * it. Hand-written: no Debian library here renders depth with a Kinect noise model. */
 #include <mrpt/config/CLoadableOptions.h>
+#include <mrpt/poses/CPose3D.h>
 
 #include <Eigen/Geometry>
 #include <opencv2/core.hpp>
@@ -43,7 +44,7 @@ struct KinectModel : public mrpt::config::CLoadableOptions {
   int correlation_window = 9;
   /** [px] fixed-pattern disparity error of the sensor unit (std): smooth over the image and the
    * same in every frame, the residual distortion Kinect calibrations find. 0.3 px is ~1 % of
-   * the depth at 2 m; set with the realism check (README, Simulator). 0 = none. */
+   * the depth at 2 m; set with the realism check (doc/simulator.md). 0 = none. */
   double disparity_distortion = 0.3;
   /** [px] a farther surface this close to a nearer one takes the nearer one's depth (the block
    * matcher's window locks onto the foreground: objects look fatter). 0 = none. */
@@ -66,11 +67,26 @@ struct KinectModel : public mrpt::config::CLoadableOptions {
   void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
 };
 
-/** Applies the sensor model. `previous_pose` (pose `exposure_ms` earlier) sets the motion blur.
- * Returns 8-bit BGR colour and 16-bit depth in units of 1/`depth_factor` m. */
-void applyKinectModel(const IdealFrame& ideal, const Scene& scene, const PinholeCamera& cam,
-                      const mrpt::poses::CPose3D& pose, const mrpt::poses::CPose3D& previous_pose,
-                      double gain, const KinectModel& model, double depth_factor, std::mt19937& rng,
-                      cv::Mat& bgr, cv::Mat& depth_raw);
+/** One frame's inputs to applyKinectModel() besides the ideal render. */
+struct SensorInputs {
+  mrpt::poses::CPose3D pose;           //!< camera (optical frame in the world) at the frame time
+  mrpt::poses::CPose3D previous_pose;  //!< camera `exposure_ms` earlier: sets the motion blur
+  double gain = 1.0;                   //!< auto-exposure gain on the linear colour
+  double depth_factor = 5000;          //!< [1/m] raw depth units per metre (TUM: 5000)
+};
+
+/** What the sensor delivers. */
+struct SensorFrame {
+  cv::Mat bgr;    //!< CV_8UC3 colour
+  cv::Mat depth;  //!< CV_16UC1 depth in units of 1/depth_factor m, 0 = no depth
+};
+
+/** Applies the sensor model to `ideal`: disparity noise (smooth, fixed-pattern and windowed
+ * per-pixel), edge fattening, missing and flying depth at discontinuities, disparity
+ * quantisation; motion blur, gain, gamma and noise on the colour. Draws from `rng` in a fixed
+ * order, so a seed gives the same frames. */
+[[nodiscard]] SensorFrame applyKinectModel(const IdealFrame& ideal, const PinholeCamera& cam,
+                                           const SensorInputs& inputs, const KinectModel& model,
+                                           std::mt19937& rng);
 
 }  // namespace hrgbd::sim
