@@ -3,6 +3,7 @@
  * The one loop of the apps: source -> odometry -> sinks. Playback runs it to the end, the live
  * app one step at a time between its window's keys, the benchmark through playback. */
 #include <cstddef>
+#include <iosfwd>
 #include <memory>
 #include <vector>
 
