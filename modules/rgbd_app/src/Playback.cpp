@@ -1,133 +1,160 @@
 #include "rgbd_app/Playback.h"
 
-#include <mrpt/config/CConfigFileMemory.h>
 #include <unistd.h>
 
-#include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <iomanip>
 #include <iostream>
 
-#include "MapOutputs.h"
 #include "PlaybackSection.h"
-#include "rgbd_app/MakeOdometry.h"
+#include "rgbd_app/FrameLoop.h"
+#include "rgbd_app/MapSinks.h"
+#include "rgbd_app/TextSinks.h"
+#include "rgbd_app/makeOdometry.h"
 #include "rgbd_core/Config.h"
 #include "rgbd_eval/EvalPlot.h"
 #include "rgbd_eval/Evaluate.h"
-#include "rgbd_io/TumSource.h"
 #include "rgbd_io/openFrameSource.h"
 
 namespace hrgbd {
 namespace {
 
-void writeCsvHeader(std::ostream& out) {
-  out << "timestamp,status,path,orb_features,features,matches,inliers,scale_m,ms_prepare,"
-         "ms_features,"
-         "ms_matching,ms_estimation,ms_refine,ms_total,detail\n";
+/** What runPlayback() does: the options over the INI's [Playback], [Odometry]. */
+struct PlaybackJob {
+  std::unique_ptr<mrpt::config::CConfigFileBase> cfg;
+  OdometryParams odometry;
+  std::string input, trajectory, csv;
+  MapOutputPaths outputs;
+};
+
+PlaybackJob resolveJob(const PlaybackOptions& opt) {
+  PlaybackJob job;
+  job.cfg = loadChecked(opt.config);
+  PlaybackSection pb;
+  pb.load(*job.cfg,
+          opt.config.empty() ? "." : std::filesystem::path(opt.config).parent_path().string());
+  if (!opt.ini_outputs) pb.csv.clear(), pb.outputs = {};
+  loadStrict(job.odometry, *job.cfg, "Odometry");
+  if (!opt.method.empty()) job.odometry.method = parseMethod(opt.method);
+  auto pick = [](const std::string& cli, const std::string& ini) {
+    return cli.empty() ? ini : cli;
+  };
+  job.input = pick(opt.input, pb.input);
+  job.trajectory = pick(opt.trajectory, pb.trajectory);
+  job.csv = pick(opt.csv, pb.csv);
+  job.outputs = {pick(opt.output_rawlog, pb.outputs.output_rawlog),
+                 pick(opt.simplemap, pb.outputs.simplemap), pick(opt.map_ply, pb.outputs.map_ply),
+                 pick(opt.map_scene, pb.outputs.map_scene)};
+  return job;
 }
 
-void writeCsvRow(std::ostream& out, const FrameResult& r) {
-  out << std::fixed << std::setprecision(6) << r.t << "," << toString(r.status) << "," << r.path
-      << "," << r.orb_features << "," << r.features << "," << r.matches << "," << r.inliers << ","
-      << std::setprecision(5) << r.scale << "," << std::setprecision(3) << r.ms.prepare << ","
-      << r.ms.features << "," << r.ms.matching << "," << r.ms.estimation << "," << r.ms.refine
-      << "," << r.ms.total << ",\"" << r.detail << "\"\n";
-  out.flush();
+/** Collects the PlaybackSummary; finish() logs the counts and times, and throws when the source
+ * gave no frame at all. */
+class SummarySink : public FrameSink {
+ public:
+  explicit SummarySink(const FrameSource& source) : m_source(source) {}
+  void add(const mrpt::obs::CObservation3DRangeScan&, const FrameResult& r) override {
+    FrameResult figures = r;
+    figures.inlier_points.clear();  // display only; a long run keeps just the figures
+    m_sum.results.push_back(figures);
+    m_sum.registered += r.registered();
+  }
+  void finish(std::ostream& log) override {
+    m_sum.frames = m_sum.results.size();
+    const auto skipped = m_source.stats().skipped_objects;
+    if (m_sum.frames == 0)
+      throw std::runtime_error("no RGB-D frames (CObservation3DRangeScan) in " +
+                               m_source.describe() + " (" + std::to_string(skipped) +
+                               " other objects skipped)");
+    std::vector<double> ms;
+    for (const auto& r : m_sum.results) ms.push_back(r.ms.total);
+    m_sum.median_ms = percentile(ms, 0.5);
+    m_sum.p95_ms = percentile(ms, 0.95);
+    log << "frames: " << m_sum.frames << ", registered: " << m_sum.registered
+        << ", skipped objects: " << skipped << "\n"
+        << "time per frame: median " << std::fixed << std::setprecision(1) << m_sum.median_ms
+        << " ms, 95th percentile " << m_sum.p95_ms << " ms\n";
+  }
+  PlaybackSummary& summary() { return m_sum; }
+
+ private:
+  const FrameSource& m_source;
+  PlaybackSummary m_sum;
+};
+
+/** The playback's sinks; list() gives those in use in the order they get frames and finish. */
+struct PlaybackSinks {
+  std::unique_ptr<ProgressSink> progress;
+  std::unique_ptr<SummarySink> summary;
+  std::unique_ptr<TrajectorySink> trajectory;
+  std::unique_ptr<CsvSink> csv;
+  std::unique_ptr<PosedRawlogSink> rawlog;
+  std::unique_ptr<SimplemapSink> simplemap;
+  std::unique_ptr<ColouredMapSink> map;
+
+  std::vector<FrameSink*> list() const {
+    std::vector<FrameSink*> out;
+    for (FrameSink* s :
+         std::initializer_list<FrameSink*>{progress.get(), summary.get(), trajectory.get(),
+                                           csv.get(), rawlog.get(), simplemap.get(), map.get()})
+      if (s) out.push_back(s);
+    return out;
+  }
+};
+
+/** Opens the output files (trajectory first, then CSV, rawlog); throws if one cannot be written. */
+PlaybackSinks makeSinks(const PlaybackJob& job, const FrameSource& source, bool progress_bar) {
+  PlaybackSinks s;
+  if (progress_bar) s.progress = std::make_unique<ProgressSink>(std::cerr);
+  s.summary = std::make_unique<SummarySink>(source);
+  s.trajectory = std::make_unique<TrajectorySink>(
+      job.trajectory, std::string("# hybrid-rgbd-odometry ") + toString(job.odometry.method) +
+                          ": timestamp tx ty tz qx qy qz qw (optical frame of the first camera)");
+  if (!job.csv.empty()) s.csv = std::make_unique<CsvSink>(job.csv);
+  MapParams map_params;
+  loadStrict(map_params, *job.cfg, "Map");
+  const auto& o = job.outputs;
+  if (!o.output_rawlog.empty()) s.rawlog = std::make_unique<PosedRawlogSink>(o.output_rawlog);
+  if (!o.simplemap.empty()) s.simplemap = std::make_unique<SimplemapSink>(o.simplemap);
+  if (!o.map_ply.empty() || !o.map_scene.empty())
+    s.map = std::make_unique<ColouredMapSink>(map_params, MapFiles{o.map_ply, o.map_scene});
+  return s;
 }
 
-void progressBar(std::ostream& err, std::size_t n, std::size_t registered, double ms) {
-  err << "\r  frame " << std::setw(6) << n << "  registered " << std::setw(6) << registered << "  "
-      << std::fixed << std::setprecision(1) << std::setw(6) << ms << " ms/frame" << std::flush;
+/** Evaluation against the source's ground truth, when it has one; failures are logged. */
+void evaluate(const FrameSource& source, const Trajectory& estimate, const std::string& plot,
+              const std::string& title, PlaybackSummary& sum, std::ostream& log) {
+  const auto gt = source.groundTruth();
+  if (gt.empty() || estimate.size() < 3) return;
+  try {
+    sum.eval = evaluateTrajectory(gt, estimate);
+    sum.evaluated = true;
+    log << "evaluation against ground truth:\n" << toText(sum.eval);
+    if (!plot.empty()) plotEvaluation(sum.eval, plot, title);
+  } catch (const std::exception& ex) {
+    log << "evaluation skipped: " << ex.what() << "\n";
+  }
 }
 
 }  // namespace
 
 PlaybackSummary runPlayback(const PlaybackOptions& opt, std::ostream& log) {
-  const auto cfg = loadChecked(opt.config);
-  PlaybackSection pb;
-  pb.load(*cfg,
-          opt.config.empty() ? "." : std::filesystem::path(opt.config).parent_path().string());
-  if (!opt.ini_outputs) pb.csv.clear(), pb.outputs = {};
-  OdometryParams params;
-  loadStrict(params, *cfg, "Odometry");
-  if (!opt.method.empty()) params.method = parseMethod(opt.method);
-  RgbdOdometry odometry = makeOdometry(params, *cfg);
+  const auto job = resolveJob(opt);
+  auto odometry = makeOdometry(job.odometry, *job.cfg);
+  if (job.input.empty()) throw ConfigError("no input: give --input or [Playback] input");
+  auto source = openFrameSource(job.input, *job.cfg);
+  log << "input: " << source->describe() << "\nmethod: " << toString(job.odometry.method) << "\n";
 
-  const auto input = opt.input.empty() ? pb.input : opt.input;
-  if (input.empty()) throw ConfigError("no input: give --input or [Playback] input");
-  auto source = openFrameSource(input, *cfg);
-  log << "input: " << source->describe() << "\nmethod: " << toString(params.method) << "\n";
+  const auto sinks = makeSinks(job, *source, opt.progress && isatty(STDERR_FILENO));
+  FrameLoop loop(*source, std::move(odometry), sinks.list(),
+                 opt.max_frames > 0 ? static_cast<std::size_t>(opt.max_frames) : 0);
+  loop.run();
+  loop.finish(log);
 
-  const auto traj_path = opt.trajectory.empty() ? pb.trajectory : opt.trajectory;
-  std::ofstream traj(traj_path);
-  if (!traj) throw std::runtime_error("cannot write trajectory '" + traj_path + "'");
-  traj << "# hybrid-rgbd-odometry " << toString(params.method)
-       << ": timestamp tx ty tz qx qy qz qw (optical frame of the first camera)\n";
-  const auto csv_path = opt.csv.empty() ? pb.csv : opt.csv;
-  std::ofstream csv;
-  if (!csv_path.empty()) {
-    csv.open(csv_path);
-    if (!csv) throw std::runtime_error("cannot write CSV '" + csv_path + "'");
-    writeCsvHeader(csv);
-  }
-
-  auto pick = [](const std::string& cli, const std::string& ini) {
-    return cli.empty() ? ini : cli;
-  };
-  MapParams map_params;
-  loadStrict(map_params, *cfg, "Map");
-  MapOutputs outputs(
-      {pick(opt.output_rawlog, pb.outputs.output_rawlog), pick(opt.simplemap, pb.outputs.simplemap),
-       pick(opt.map_ply, pb.outputs.map_ply), pick(opt.map_scene, pb.outputs.map_scene)},
-      map_params);
-
-  PlaybackSummary sum;
-  Trajectory estimate;
-  const bool bar = opt.progress && isatty(STDERR_FILENO);
-  while (auto obs = source->next()) {
-    auto r = odometry.processObservation(*obs);
-    r.inlier_points.clear();  // display only; a long run keeps just the figures
-    writeTumLine(traj, {r.t, r.pose});
-    traj.flush();
-    if (csv.is_open()) writeCsvRow(csv, r);
-    outputs.add(*obs, r);
-    estimate.push_back({r.t, r.pose});
-    sum.registered += r.registered();
-    sum.results.push_back(r);
-    if (bar) progressBar(std::cerr, sum.results.size(), sum.registered, r.ms.total);
-    if (opt.max_frames > 0 && sum.results.size() >= static_cast<std::size_t>(opt.max_frames)) break;
-  }
-  if (bar) std::cerr << "\n";
-  sum.frames = sum.results.size();
-  if (sum.frames == 0)
-    throw std::runtime_error("no RGB-D frames (CObservation3DRangeScan) in " + source->describe() +
-                             " (" + std::to_string(source->stats().skipped_objects) +
-                             " other objects skipped)");
-  std::vector<double> ms;
-  for (const auto& r : sum.results) ms.push_back(r.ms.total);
-  sum.median_ms = percentile(ms, 0.5);
-  sum.p95_ms = percentile(ms, 0.95);
-  log << "frames: " << sum.frames << ", registered: " << sum.registered
-      << ", skipped objects: " << source->stats().skipped_objects << "\n"
-      << "time per frame: median " << std::fixed << std::setprecision(1) << sum.median_ms
-      << " ms, 95th percentile " << sum.p95_ms << " ms\n"
-      << "trajectory: " << traj_path << "\n";
-  sum.map_points = outputs.finish(log);
-
-  const auto gt = source->groundTruth();
-  if (!gt.empty() && estimate.size() >= 3) {
-    try {
-      const auto e = evaluateTrajectory(gt, estimate);
-      sum.evaluated = true;
-      sum.eval = e;
-      log << "evaluation against ground truth:\n" << toText(e);
-      if (!opt.plot.empty())
-        plotEvaluation(e, opt.plot, input + " (" + toString(params.method) + ")");
-    } catch (const std::exception& ex) {
-      log << "evaluation skipped: " << ex.what() << "\n";
-    }
-  }
+  auto sum = std::move(sinks.summary->summary());
+  sum.map_points = sinks.map ? sinks.map->map().size() : 0;
+  evaluate(*source, sinks.trajectory->trajectory(), opt.plot,
+           job.input + " (" + toString(job.odometry.method) + ")", sum, log);
   return sum;
 }
 

@@ -2,6 +2,7 @@
 
 #include <sys/utsname.h>
 
+#include <algorithm>
 #include <chrono>
 #include <ctime>
 #include <filesystem>
@@ -95,9 +96,10 @@ std::vector<BenchSequence> prepareSequences(const BenchmarkParams& p,
   return out;
 }
 
-BenchmarkReport runBenchmark(const std::string& config_file, const std::vector<std::string>& extra,
-                             std::ostream& log) {
-  const auto start = std::chrono::steady_clock::now();
+namespace {
+
+/** [Benchmark] from `config_file`, its paths resolved against the file's folder. */
+BenchmarkParams loadBenchmarkParams(const std::string& config_file) {
   const auto cfg = loadIniFile(config_file);
   rejectUnknownSections(*cfg);
   BenchmarkParams p;
@@ -108,62 +110,89 @@ BenchmarkReport runBenchmark(const std::string& config_file, const std::vector<s
   for (auto& m : p.sim_motions)
     if (m != "sweep") m = resolvePath(base, m);
   for (auto& r : p.real_sequences) r = resolvePath(base, r);
+  return p;
+}
 
+/** One sequence x method through runPlayback(), writing <traj_dir>/<sequence>__<method>.txt
+ * and .csv. An error is recorded in the run, not thrown. */
+BenchRun runOne(const BenchSequence& seq, const std::string& method, const std::string& config_file,
+                const fs::path& traj_dir, int max_frames) {
+  BenchRun run{seq.name, method, {}, ""};
+  auto stem = seq.name + "__" + method;
+  std::replace(stem.begin(), stem.end(), '/', '_');
+  PlaybackOptions opt;
+  opt.config = config_file;
+  opt.input = seq.input;
+  opt.trajectory = (traj_dir / (stem + ".txt")).string();
+  opt.csv = (traj_dir / (stem + ".csv")).string();
+  opt.method = method;
+  opt.max_frames = max_frames;
+  opt.progress = false;
+  opt.ini_outputs = false;
+  std::ostringstream playback_log;
+  try {
+    run.summary = runPlayback(opt, playback_log);
+  } catch (const std::exception& e) {
+    run.error = e.what();
+  }
+  return run;
+}
+
+/** One line per run: registered frames, ATE, time per frame, or the error. */
+void logRun(const BenchRun& run, std::ostream& log) {
+  log << std::left << std::setw(36) << run.sequence << std::setw(16) << run.method << std::right;
+  if (!run.error.empty())
+    log << "error: " << run.error << "\n";
+  else
+    log << std::setw(4) << run.summary.registered << "/" << std::setw(4) << std::left
+        << run.summary.frames << std::right << " registered, ATE "
+        << (run.summary.evaluated ? std::to_string(run.summary.eval.ate_mean_unaligned) : "-")
+        << " m, " << std::fixed << std::setprecision(1) << run.summary.median_ms << " ms/frame\n";
+  log.flush();
+}
+
+/** Every method on every sequence that is not skipped, on one core. */
+std::vector<BenchRun> runAll(const std::vector<BenchSequence>& sequences, const BenchmarkParams& p,
+                             const std::string& config_file, std::ostream& log) {
+  // Every method on one core, as the targets are stated (OpenCV would use both otherwise).
+  const int threads = cv::getNumThreads();
+  cv::setNumThreads(1);
+  const auto traj_dir = fs::path(p.output_folder) / "trajectories";
+  fs::create_directories(traj_dir);
+  std::vector<BenchRun> runs;
+  for (const auto& seq : sequences) {
+    if (!seq.skip_reason.empty()) {
+      log << seq.name << ": skipped (" << seq.skip_reason << ")\n";
+      continue;
+    }
+    for (const auto& method : p.methods) {
+      runs.push_back(runOne(seq, method, config_file, traj_dir, p.max_frames));
+      logRun(runs.back(), log);
+    }
+  }
+  cv::setNumThreads(threads);
+  return runs;
+}
+
+}  // namespace
+
+BenchmarkReport runBenchmark(const std::string& config_file, const std::vector<std::string>& extra,
+                             std::ostream& log) {
+  const auto start = std::chrono::steady_clock::now();
+  const auto p = loadBenchmarkParams(config_file);
   BenchmarkReport report;
   report.config_file = config_file;
   report.methods = p.methods;
   report.machine = machineDescription();
   report.date = today();
   report.sequences = prepareSequences(p, extra, log);
-
-  // Every method on one core, as the targets are stated (OpenCV would use both otherwise).
-  const int threads = cv::getNumThreads();
-  cv::setNumThreads(1);
-  const auto traj_dir = fs::path(p.output_folder) / "trajectories";
-  fs::create_directories(traj_dir);
-  for (const auto& seq : report.sequences) {
-    if (!seq.skip_reason.empty()) {
-      log << seq.name << ": skipped (" << seq.skip_reason << ")\n";
-      continue;
-    }
-    for (const auto& method : p.methods) {
-      BenchRun run{seq.name, method, {}, ""};
-      auto stem = seq.name + "__" + method;
-      std::replace(stem.begin(), stem.end(), '/', '_');
-      PlaybackOptions opt;
-      opt.config = config_file;
-      opt.input = seq.input;
-      opt.trajectory = (traj_dir / (stem + ".txt")).string();
-      opt.csv = (traj_dir / (stem + ".csv")).string();
-      opt.method = method;
-      opt.max_frames = p.max_frames;
-      opt.progress = false;
-      opt.ini_outputs = false;
-      std::ostringstream sink;
-      try {
-        run.summary = runPlayback(opt, sink);
-      } catch (const std::exception& e) {
-        run.error = e.what();
-      }
-      log << std::left << std::setw(36) << seq.name << std::setw(16) << method << std::right;
-      if (!run.error.empty())
-        log << "error: " << run.error << "\n";
-      else
-        log << std::setw(4) << run.summary.registered << "/" << std::setw(4) << std::left
-            << run.summary.frames << std::right << " registered, ATE "
-            << (run.summary.evaluated ? std::to_string(run.summary.eval.ate_mean_unaligned) : "-")
-            << " m, " << std::fixed << std::setprecision(1) << run.summary.median_ms
-            << " ms/frame\n";
-      log.flush();
-      report.runs.push_back(std::move(run));
-    }
-  }
-  cv::setNumThreads(threads);
+  report.runs = runAll(report.sequences, p, config_file, log);
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  std::ofstream(fs::path(p.output_folder) / "results.md") << toMarkdown(report);
+  const auto results = fs::path(p.output_folder) / "results.md";
+  std::ofstream(results) << toMarkdown(report);
   std::ofstream(fs::path(p.output_folder) / "results.csv") << toCsv(report);
-  log << "results: " << (fs::path(p.output_folder) / "results.md").string() << "\n";
+  log << "results: " << results.string() << "\n";
   return report;
 }
 

@@ -7,7 +7,11 @@
 namespace hrgbd {
 
 Grabber::Grabber(std::unique_ptr<FrameSource> source, bool live, double rate)
-    : m_source(std::move(source)), m_live(live), m_rate(rate), m_thread([this] { run(); }) {}
+    : m_source(std::move(source)),
+      m_description(m_source->describe()),
+      m_live(live),
+      m_rate(rate),
+      m_thread([this] { run(); }) {}
 
 Grabber::~Grabber() {
   {
@@ -50,7 +54,7 @@ void Grabber::run() {
   m_changed.notify_all();
 }
 
-mrpt::obs::CObservation3DRangeScan::Ptr Grabber::pop() {
+mrpt::obs::CObservation3DRangeScan::Ptr Grabber::next() {
   std::unique_lock<std::mutex> lock(m_mutex);
   m_changed.wait(lock, [&] { return !m_queue.empty() || m_ended; });
   if (m_queue.empty()) {
@@ -59,6 +63,7 @@ mrpt::obs::CObservation3DRangeScan::Ptr Grabber::pop() {
   }
   auto obs = m_queue.front();
   m_queue.pop_front();
+  ++m_stats.frames;
   m_changed.notify_all();
   return obs;
 }

@@ -1,7 +1,9 @@
 #pragma once
 /** \file Playback.h
- * The playback application: any FrameSource through RgbdOdometry, with trajectory, per-frame CSV
- * and evaluation against ground truth. `hybrid-rgbd-odometry` is a thin main over runPlayback(). */
+ * The playback application: any FrameSource through the FrameLoop into the sinks the options ask
+ * for (TUM trajectory, per-frame CSV, coloured map, rawlog and simplemap with poses, progress
+ * bar), then evaluation against ground truth. `hybrid-rgbd-odometry` is a thin main over
+ * runPlayback(). */
 #include <iosfwd>
 #include <memory>
 #include <string>

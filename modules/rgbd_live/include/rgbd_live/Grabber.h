@@ -1,11 +1,13 @@
 #pragma once
 /** \file Grabber.h
- * A thread that reads a FrameSource ahead of the odometry, as a sensor driver would. */
+ * A FrameSource that reads another one on its own thread, ahead of the odometry, as a sensor
+ * driver would. */
 #include <condition_variable>
 #include <deque>
 #include <exception>
 #include <memory>
 #include <mutex>
+#include <string>
 #include <thread>
 
 #include "rgbd_io/FrameSource.h"
@@ -16,17 +18,22 @@ namespace hrgbd {
  * when the consumer is behind, the oldest queued frame is dropped (and counted). A recorded
  * source waits for the consumer (no frame lost) and, with `rate` > 0, is paced at `rate` times
  * its recorded time stamps; `rate` = 0 reads as fast as the consumer takes them. */
-class Grabber {
+class Grabber : public FrameSource {
  public:
   Grabber(std::unique_ptr<FrameSource> source, bool live, double rate);
-  ~Grabber();
-  /** The next frame, nullptr at the end of the data. Rethrows the source's error. */
-  mrpt::obs::CObservation3DRangeScan::Ptr pop();
+  ~Grabber() override;
+  /** The next queued frame (waits for one), nullptr at the end of the data. Rethrows the
+   * source's error. */
+  mrpt::obs::CObservation3DRangeScan::Ptr next() override;
+  /** The wrapped source's description. */
+  std::string describe() const override { return m_description; }
+  /** [count] frames dropped because the consumer was behind a live source. */
   std::size_t dropped() const;
 
  private:
   void run();
   std::unique_ptr<FrameSource> m_source;
+  std::string m_description;
   bool m_live;
   double m_rate;
   mutable std::mutex m_mutex;

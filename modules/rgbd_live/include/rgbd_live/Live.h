@@ -1,6 +1,6 @@
 #pragma once
 /** \file Live.h
- * The live app, in the spirit of MRPT's kinect-3d-slam: a grabber thread feeds the odometry,
+ * The live app, in the spirit of MRPT's kinect-3d-slam: a grabber thread feeds the FrameLoop,
  * registered frames grow a coloured map, and an MRPT 3D window shows it all. Any recorded
  * source (rawlog, TUM folder, simulator output) runs as if live. `rgbd-live` is a thin main. */
 #include <iosfwd>
