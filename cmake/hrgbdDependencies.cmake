@@ -14,4 +14,5 @@ hrgbd_dependency(Eigen3 3.3 NO_MODULE)
 hrgbd_dependency(nanoflann)
 hrgbd_dependency(JPEG)
 hrgbd_dependency(PkgConfig)
-pkg_check_modules(OPENNI2 REQUIRED IMPORTED_TARGET libopenni2)
+# The includer checks for the target PkgConfig::OPENNI2.
+pkg_check_modules(OPENNI2 IMPORTED_TARGET libopenni2)
