@@ -176,6 +176,23 @@ TEST(CommandLine, MissingPositionalArgumentIsRefused) {
   EXPECT_EQ(err.str().rfind("pos: error: ", 0), 0u) << err.str();
 }
 
+TEST(CommandLine, UnknownOptionIsNotTakenAsAPositionalArgument) {
+  const auto run = [](std::vector<const char*> argv, std::vector<std::string>* paths) {
+    std::ostringstream out, err;
+    hrgbd::CommandLine cmd("multi", "positional paths", out, err);
+    TCLAP::ValueArg<int> n("n", "count", "how many", false, 0, cmd.atLeast(0, "N"), cmd);
+    TCLAP::UnlabeledMultiArg<std::string> in("paths", "input paths", false, "PATH", cmd);
+    return cmd.run(static_cast<int>(argv.size()), argv.data(), [&] { *paths = in.getValue(); });
+  };
+  std::vector<std::string> paths;
+  EXPECT_EQ(run({"multi", "a", "--unknown", "b"}, &paths), hrgbd::kExitUsageError);
+  EXPECT_TRUE(paths.empty());
+  EXPECT_EQ(run({"multi", "-n", "2", "a", "b"}, &paths), hrgbd::kExitSuccess);
+  EXPECT_EQ(paths, (std::vector<std::string>{"a", "b"}));
+  EXPECT_EQ(run({"multi", "a", "--", "-odd-name"}, &paths), hrgbd::kExitSuccess);
+  EXPECT_EQ(paths, (std::vector<std::string>{"a", "-odd-name"}));
+}
+
 TEST(CommandLine, EnumValuesFollowTheDeclaration) {
   EXPECT_EQ(hrgbd::enumValues<demo::Mode>(), (std::vector<std::string>{"fast", "exact"}));
 }

@@ -88,17 +88,32 @@ C* keep(std::vector<std::shared_ptr<const void>>& owner, std::shared_ptr<C> c) {
   return c.get();
 }
 
-/** TCLAP reads an empty value as "nothing" and keeps the default, so `-n ""` would be taken as
- * `-n 0`: the message for a number option followed by "", or "" if there is none. */
-std::string emptyNumber(const std::list<TCLAP::Arg*>& options,
-                        const std::vector<const char*>& args) {
-  for (std::size_t i = 1; i + 1 < args.size(); ++i) {
-    if (*args[i + 1] != '\0') continue;
+template <class To>
+bool is(const TCLAP::Arg* a) {
+  return dynamic_cast<const To*>(a) != nullptr;
+}
+
+/** The two things TCLAP lets through: an unknown "-x" where a positional argument may stand
+ * (unlabeled arguments take any word, so `rgbd-benchmark --unknown` would run the benchmark on a
+ * sequence named "--unknown"), and "" as a number (TCLAP reads nothing and keeps the default, so
+ * `-n ""` would mean `-n 0`). Returns the error, or "" when there is none. */
+std::string precheck(const std::list<TCLAP::Arg*>& options, const std::vector<const char*>& args) {
+  for (std::size_t i = 1; i < args.size(); ++i) {
+    const std::string word = args[i];
+    if (word == "--") break;  // the rest is positional
+    const TCLAP::Arg* option = nullptr;
     for (const TCLAP::Arg* a : options)
-      if ((dynamic_cast<const TCLAP::ValueArg<int>*>(a) ||
-           dynamic_cast<const TCLAP::ValueArg<double>*>(a)) &&
-          a->argMatches(args[i]))
-        return "--" + a->getName() + ": an empty value is not a number";
+      if (!is<TCLAP::UnlabeledValueArg<std::string>>(a) &&
+          !is<TCLAP::UnlabeledMultiArg<std::string>>(a) && a->argMatches(word))
+        option = a;
+    if (!option) {
+      if (word.size() > 1 && word[0] == '-') return word + ": unknown option";
+      continue;
+    }
+    if (!option->isValueRequired() || ++i == args.size()) continue;
+    if (*args[i] == '\0' &&
+        (is<TCLAP::ValueArg<int>>(option) || is<TCLAP::ValueArg<double>>(option)))
+      return "--" + option->getName() + ": an empty value is not a number";
   }
   return "";
 }
@@ -124,7 +139,7 @@ int CommandLine::run(int argc, const char* const* argv, const std::function<void
   args[0] = m_app.c_str();
   m_output->printed = false;
   m_output->error.clear();
-  if (const auto e = emptyNumber(getArgList(), args); !e.empty()) return refuse(e);
+  if (const auto e = precheck(getArgList(), args); !e.empty()) return refuse(e);
   if (!parse(static_cast<int>(args.size()), args.data())) {
     if (m_output->printed && m_output->error.empty()) return kExitSuccess;
     return refuse(m_output->error.empty() ? "invalid command line" : m_output->error);
