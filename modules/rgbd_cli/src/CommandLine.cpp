@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <list>
 #include <sstream>
 #include <type_traits>
 
@@ -88,6 +89,7 @@ C* keep(std::vector<std::shared_ptr<const void>>& owner, std::shared_ptr<C> c) {
   return c.get();
 }
 
+/** Whether option `a` is a `To`. */
 template <class To>
 bool is(const TCLAP::Arg* a) {
   return dynamic_cast<const To*>(a) != nullptr;
