@@ -3,6 +3,7 @@
 // output file; a runtime error exits 1. Each refusal has a control: the same command line with a
 // valid value runs and writes its output, so "no file" means "nothing ran".
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -32,7 +33,9 @@ std::string slurp(const fs::path& p) {
 /** Runs `app` (a name in <build>/apps) with `args` (shell words) and captures its output. A run
  * that should have been refused but starts the job is stopped after two minutes (exit 124). */
 Run runApp(const std::string& app, const std::string& args) {
-  const fs::path dir = hrgbd::test::tempDir("cli_capture");
+  static int runs = 0;  // ctest runs the tests in parallel processes: one folder per run
+  const fs::path dir = hrgbd::test::tempDir("cli_capture_" + std::to_string(getpid()) + "_" +
+                                            std::to_string(runs++));
   const auto cmd = "timeout 120 " + std::string(HRGBD_BINARY_DIR) + "/apps/" + app + " " + args +
                    " > " + (dir / "out").string() + " 2> " + (dir / "err").string() +
                    " < /dev/null";
@@ -41,6 +44,7 @@ Run runApp(const std::string& app, const std::string& args) {
   r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   r.out = slurp(dir / "out");
   r.err = slurp(dir / "err");
+  fs::remove_all(dir);
   return r;
 }
 
