@@ -1,29 +1,26 @@
 // rgbd-eval GROUNDTRUTH ESTIMATE [--json] [--plot FILE.png]: TUM-format trajectory accuracy.
-#include <mrpt/3rdparty/tclap/CmdLine.h>
-
 #include <iostream>
 
+#include "rgbd_cli/CommandLine.h"
 #include "rgbd_eval/EvalPlot.h"
 #include "rgbd_eval/Evaluate.h"
 
 int main(int argc, char** argv) {
-  try {
-    TCLAP::CmdLine cmd(
-        "rgbd-eval: ATE (aligned RMSE and the paper's unaligned mean) and RPE of "
-        "a TUM-format trajectory against ground truth",
-        ' ', "0.1");
-    TCLAP::UnlabeledValueArg<std::string> gt("groundtruth", "ground truth (TUM format)", true, "",
-                                             "GROUNDTRUTH", cmd);
-    TCLAP::UnlabeledValueArg<std::string> est("estimate", "estimate (TUM format)", true, "",
-                                              "ESTIMATE", cmd);
-    TCLAP::SwitchArg json("", "json", "print one JSON object", cmd);
-    TCLAP::ValueArg<std::string> plot("", "plot", "write a PNG like the paper's Fig. 5", false, "",
-                                      "FILE.png", cmd);
-    TCLAP::ValueArg<double> max_dt("", "max-dt", "association limit [s] (0.02)", false, 0.02,
-                                   "SECONDS", cmd);
-    TCLAP::ValueArg<double> delta("", "rpe-delta", "RPE interval [s] (1.0)", false, 1.0, "SECONDS",
-                                  cmd);
-    cmd.parse(argc, argv);
+  hrgbd::CommandLine cmd("rgbd-eval",
+                         "ATE (aligned RMSE and the paper's unaligned mean) and RPE of a "
+                         "TUM-format trajectory against ground truth");
+  TCLAP::UnlabeledValueArg<std::string> gt("groundtruth", "ground truth (TUM format)", true, "",
+                                           "GROUNDTRUTH", cmd);
+  TCLAP::UnlabeledValueArg<std::string> est("estimate", "estimate (TUM format)", true, "",
+                                            "ESTIMATE", cmd);
+  TCLAP::SwitchArg json("", "json", "print one JSON object", cmd);
+  TCLAP::ValueArg<std::string> plot("", "plot", "write a PNG like the paper's Fig. 5", false, "",
+                                    "FILE.png", cmd);
+  TCLAP::ValueArg<double> max_dt("", "max-dt", "association limit [s], > 0 (0.02)", false, 0.02,
+                                 cmd.above(0.0, "SECONDS"), cmd);
+  TCLAP::ValueArg<double> delta("", "rpe-delta", "RPE interval [s], > 0 (1.0)", false, 1.0,
+                                cmd.above(0.0, "SECONDS"), cmd);
+  return cmd.run(argc, argv, [&] {
     hrgbd::EvalParams p;
     p.max_time_difference = max_dt.getValue();
     p.rpe_delta = delta.getValue();
@@ -31,9 +28,5 @@ int main(int argc, char** argv) {
                                              hrgbd::loadTumTrajectory(est.getValue()), p);
     std::cout << (json.getValue() ? hrgbd::toJson(r) + "\n" : hrgbd::toText(r));
     if (!plot.getValue().empty()) hrgbd::plotEvaluation(r, plot.getValue(), est.getValue());
-    return 0;
-  } catch (const std::exception& e) {
-    std::cerr << "rgbd-eval: error: " << e.what() << "\n";
-    return 1;
-  }
+  });
 }
