@@ -47,7 +47,8 @@ const char* toString(FrameResult::Status s);
 
 class RgbdOdometry {
  public:
-  /** Throws ConfigError for an unknown method or policy, or a method not available. */
+  /** Takes `params` as they are: loading checked them (OdometryParams::validate() checks values
+   * set in code). Every Method and FailurePolicy is available. */
   explicit RgbdOdometry(const OdometryParams& params);
   /** Registers one frame. Never throws for bad frames (they come back flagged). */
   FrameResult processObservation(const mrpt::obs::CObservation3DRangeScan& obs);
