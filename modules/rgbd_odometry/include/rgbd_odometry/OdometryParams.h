@@ -12,9 +12,11 @@
 
 namespace hrgbd {
 
-/** Registration methods: the paper's and its baselines (Tables I and II). */
+/** Registration methods: the paper's, its baselines (Tables I and II) and OpenCV contrib's dense
+ * odometries as peers. INI key [Odometry] method, names below (MRPT_FILL_ENUM_CUSTOM_NAME). */
 enum class Method {
-  Hybrid,     //!< ORB + MSSE; geometric features when too few ORB features (paper)
+  Hybrid,     //!< ORB + MSSE; geometric features when too few ORB features (paper), see
+              //!< min_photometric_inliers and geometric_fallback for the additions
   RgbOnly,    //!< ORB + MSSE always
   DepthOnly,  //!< geometric (IS3D + SHOT) + MSSE always
   Ransac,     //!< ORB + RANSAC
