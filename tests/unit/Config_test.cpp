@@ -2,12 +2,56 @@
 
 #include <mrpt/config/CConfigFileMemory.h>
 
+#include <stdexcept>
+
 #include "TestData.h"
+#include "rgbd_core/Params.h"
 #include "rgbd_io/TumSource.h"
 
 using hrgbd::ConfigError;
 
 namespace {
+
+enum class Colour { Red, Green };
+
+}  // namespace
+
+MRPT_ENUM_TYPE_BEGIN(Colour)
+MRPT_FILL_ENUM_CUSTOM_NAME(Colour::Red, "red");
+MRPT_FILL_ENUM_CUSTOM_NAME(Colour::Green, "green");
+MRPT_ENUM_TYPE_END()
+
+namespace {
+
+// One field of each declarable type, in section [K].
+struct Kinds : public hrgbd::Params<Kinds> {
+  int count = 3;
+  double size = 0.02;
+  bool flag = true;
+  std::string name = "hybrid";
+  Colour colour = Colour::Red;
+  std::vector<std::string> words{"a", "b"};
+  template <class P, class V>
+  static void declare(P& p, V& v) {
+    HRGBD_PARAM(count, "[count] things", hrgbd::Range::closed(-10, 10));
+    HRGBD_PARAM(size, "[m] a length", hrgbd::Range::above(0));
+    HRGBD_PARAM(flag, "a switch");
+    HRGBD_PARAM(name, "any text");
+    HRGBD_PARAM(colour, "a colour");
+    HRGBD_PARAM(words, "a list", hrgbd::OneOf{{"a", "b", "c"}});
+  }
+};
+
+// A programming error: one key declared twice.
+struct Twice : public hrgbd::Params<Twice> {
+  int a = 1, b = 2;
+  template <class P, class V>
+  static void declare(P& p, V& v) {
+    HRGBD_PARAM(a, "");
+    v(p.b, "a", "");
+  }
+};
+
 std::string messageOf(const std::string& ini) {
   mrpt::config::CConfigFileMemory cfg(ini);
   hrgbd::TumSourceParams p;
@@ -18,56 +62,106 @@ std::string messageOf(const std::string& ini) {
   }
   return "";
 }
-// One field of each kind, loaded the MRPT way (which reads "abc" as 0 without a word).
-struct Kinds : public mrpt::config::CLoadableOptions {
-  int count = 3;
-  double size = 0.02;
-  bool flag = true;
-  std::string name = "hybrid";
-  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override {
-    MRPT_LOAD_CONFIG_VAR_CS(count, int);
-    MRPT_LOAD_CONFIG_VAR_CS(size, double);
-    MRPT_LOAD_CONFIG_VAR_CS(flag, bool);
-    MRPT_LOAD_CONFIG_VAR_CS(name, string);
-  }
-  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override {
-    MRPT_SAVE_CONFIG_VAR(count, c, s);
-    MRPT_SAVE_CONFIG_VAR(size, c, s);
-    MRPT_SAVE_CONFIG_VAR(flag, c, s);
-    MRPT_SAVE_CONFIG_VAR(name, c, s);
-  }
-};
 
-std::string strictMessageOf(const std::string& line) {
+std::string kindsMessageOf(const std::string& line) {
   mrpt::config::CConfigFileMemory cfg("[K]\n" + line + "\n");
   Kinds k;
   try {
-    hrgbd::loadStrict(k, cfg, "K");
+    k.loadFromConfigFile(cfg, "K");
   } catch (const ConfigError& e) {
     return e.what();
   }
   return "";
 }
+
 }  // namespace
 
-TEST(Config, LoadStrictRejectsValuesMrptWouldMisread) {
-  for (const auto* line : {"size = abc", "size = 1,5", "size =", "size = nan", "size = 1e400",
-                           "count = 2.7", "count = 99999999999", "count = x", "flag = maybe"}) {
-    const auto msg = strictMessageOf(line);
-    const std::string key = std::string(line).substr(0, std::string(line).find(' '));
-    EXPECT_NE(msg.find("[K] " + key), std::string::npos) << line << " -> '" << msg << "'";
+// MRPT's own reading, which the strict check guards against: "//" after a blank starts a comment,
+// '#' after a value does not, and read_int/read_bool take a prefix or give 0/false.
+TEST(Config, MrptReadsCommentsAsAssumed) {
+  mrpt::config::CConfigFileMemory cfg(
+      "[K]\na = 1,5  // c\nb = 2.7 # c\nc = maybe // c\nd =   // c\ne = x//y\n");
+  EXPECT_EQ(cfg.read_string("K", "a", ""), "1,5");
+  EXPECT_EQ(cfg.read_int("K", "a", -1), 1);
+  EXPECT_EQ(cfg.read_string("K", "b", ""), "2.7 # c");
+  EXPECT_EQ(cfg.read_int("K", "b", -1), 2);
+  EXPECT_FALSE(cfg.read_bool("K", "c", true));
+  EXPECT_EQ(cfg.read_string("K", "d", ""), "// c");
+  EXPECT_EQ(cfg.read_string("K", "e", ""), "x//y");
+}
+
+TEST(Config, MalformedValuesAreRejectedNamingSectionAndKey) {
+  for (const std::string line :
+       {"size = abc",  "size = 1,5",    "size =",       "size = nan",   "size = inf",
+        "size = -inf", "size = 1e400",  "count = 2.7",  "count = 1,5",  "count = 99999999999",
+        "count = x",   "count =",       "count = 0x10", "flag = maybe", "flag = 2",
+        "flag =",      "colour = blue", "colour = 1",   "colour =",     "colour = red green",
+        "words = a d"}) {
+    for (const std::string comment : {"", "  // a comment", " # a comment"}) {
+      const auto msg = kindsMessageOf(line + comment);
+      const auto key = line.substr(0, line.find(' '));
+      EXPECT_NE(msg.find("[K] " + key), std::string::npos)
+          << line + comment << " -> '" << msg << "'";
+    }
   }
 }
 
-TEST(Config, LoadStrictAcceptsWellFormedValues) {
+TEST(Config, HashAfterAValueIsRejectedEvenForText) {
+  for (const std::string line : {"count = 4 # c", "name = x.rawlog # c", "name = x ; c",
+                                 "words = a b # c", "name =  // c"}) {
+    const auto msg = kindsMessageOf(line);
+    EXPECT_NE(msg.find("[K] " + line.substr(0, line.find(' '))), std::string::npos) << line;
+  }
+}
+
+TEST(Config, WellFormedValuesLoadWithTrailingComments) {
   mrpt::config::CConfigFileMemory cfg(
-      "[K]\ncount = -4\nsize = 2.5e-3\nflag = no\nname = 1,5 anything\n");
+      "[K]\ncount = -4 // c\nsize = 2.5e-3\t// c\nflag = no // c\nname = 1,5 anything // c\n"
+      "colour = green // c\nwords = c a // c\n");
   Kinds k;
-  hrgbd::loadStrict(k, cfg, "K");
+  k.loadFromConfigFile(cfg, "K");
   EXPECT_EQ(k.count, -4);
   EXPECT_DOUBLE_EQ(k.size, 2.5e-3);
   EXPECT_FALSE(k.flag);
   EXPECT_EQ(k.name, "1,5 anything");
+  EXPECT_EQ(k.colour, Colour::Green);
+  EXPECT_EQ(k.words, (std::vector<std::string>{"c", "a"}));
+}
+
+TEST(Config, RangeIsCheckedNamingSectionKeyAndBound) {
+  auto msg = kindsMessageOf("count = 11");
+  EXPECT_NE(msg.find("[K] count = 11: must be in [-10, 10]"), std::string::npos) << msg;
+  msg = kindsMessageOf("size = 0");
+  EXPECT_NE(msg.find("[K] size = 0: must be > 0"), std::string::npos) << msg;
+  EXPECT_EQ(kindsMessageOf("count = 10"), "");
+  Kinds k;
+  k.count = -11;  // set in code: validate() applies the same checks
+  EXPECT_THROW(k.validate("K"), ConfigError);
+}
+
+TEST(Config, SavedValuesLoadBackUnchanged) {
+  Kinds a;
+  a.count = 7, a.size = 0.125, a.flag = false, a.name = "", a.colour = Colour::Green;
+  a.words = {"c"};
+  mrpt::config::CConfigFileMemory out;
+  a.saveToConfigFile(out, "K");
+  Kinds b;
+  b.loadFromConfigFile(mrpt::config::CConfigFileMemory(out.getContent()), "K");
+  EXPECT_EQ(b.count, 7);
+  EXPECT_DOUBLE_EQ(b.size, 0.125);
+  EXPECT_FALSE(b.flag);
+  EXPECT_EQ(b.name, "");  // saved bare: a comment after an empty value would be read as it
+  EXPECT_EQ(b.colour, Colour::Green);
+  EXPECT_EQ(b.words, a.words);
+  EXPECT_NE(out.getContent().find("red|green: a colour"), std::string::npos);
+  EXPECT_NE(out.getContent().find("a|b|c: a list"), std::string::npos);
+}
+
+TEST(Config, KeyDeclaredTwiceIsAProgrammingError) {
+  Twice t;
+  EXPECT_THROW(t.loadFromConfigFile(mrpt::config::CConfigFileMemory(), "T"), std::logic_error);
+  EXPECT_EQ(Kinds().keyNames(),
+            (std::vector<std::string>{"count", "size", "flag", "name", "colour", "words"}));
 }
 
 TEST(Config, UnknownKeyIsRejectedNamingSectionAndKey) {
@@ -80,17 +174,29 @@ TEST(Config, OutOfRangeValueIsRejectedNamingKey) {
   const auto msg = messageOf("[TumSource]\ndepth_factor = -3\n");
   EXPECT_NE(msg.find("depth_factor"), std::string::npos) << msg;
   EXPECT_NE(messageOf("[TumSource]\nintrinsics = fr9\n").find("intrinsics"), std::string::npos);
+  EXPECT_NE(messageOf("[TumSource]\nfy = 0 // c\n").find("[TumSource] fy"), std::string::npos);
 }
 
 TEST(Config, ValidSectionLoadsValues) {
   mrpt::config::CConfigFileMemory cfg(
-      "[TumSource]\nmax_time_difference = 0.01\nintrinsics = explicit\nfx = 500\n");
+      "[TumSource]\nmax_time_difference = 0.01 // s\nintrinsics = explicit // c\nfx = 500\n");
   hrgbd::TumSourceParams p;
   p.loadFromConfigFile(cfg, "TumSource");
   EXPECT_DOUBLE_EQ(p.max_time_difference, 0.01);
   EXPECT_EQ(p.intrinsics, "explicit");
   EXPECT_DOUBLE_EQ(p.fx, 500);
   EXPECT_DOUBLE_EQ(p.depth_factor, 5000);  // default kept
+}
+
+TEST(Config, UnknownSectionIsRejectedAndSimulatorIsKnown) {
+  EXPECT_NO_THROW(hrgbd::rejectUnknownSections(
+      mrpt::config::CConfigFileMemory("[Simulator]\nframes = 3\n[Odometry]\n")));
+  try {
+    hrgbd::rejectUnknownSections(mrpt::config::CConfigFileMemory("[Odometri]\n"));
+    FAIL() << "unknown section accepted";
+  } catch (const ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("[Odometri]"), std::string::npos) << e.what();
+  }
 }
 
 TEST(Config, MissingFileIsAnError) {

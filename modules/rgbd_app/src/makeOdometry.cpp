@@ -8,7 +8,7 @@ namespace hrgbd {
 std::unique_ptr<RgbdOdometry> makeOdometry(const OdometryParams& params,
                                            const mrpt::config::CConfigFileBase& cfg) {
   BaselineParams baselines;
-  loadStrict(baselines, cfg, "RANSAC");
+  baselines.loadFromConfigFile(cfg, BaselineParams::kSection);
   return std::make_unique<RgbdOdometry>(params, makeAnyRegistration(params, baselines));
 }
 

@@ -63,17 +63,6 @@ class OpenCvPeer : public Registration {
 
 }  // namespace
 
-void BaselineParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
-                                        const std::string&) {
-  ransac.loadFromConfigFile(c, "RANSAC");
-  icp.loadFromConfigFile(c, "ICP");
-}
-
-void BaselineParams::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string&) const {
-  ransac.saveToConfigFile(c, "RANSAC");
-  icp.saveToConfigFile(c, "ICP");
-}
-
 std::unique_ptr<Registration> makeAnyRegistration(const OdometryParams& p,
                                                   const BaselineParams& b) {
   auto ransac = [&] {

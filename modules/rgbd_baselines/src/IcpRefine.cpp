@@ -29,25 +29,6 @@ mrpt::maps::CSimplePointsMap cloudOf(const RgbdImage& f, int target_points, doub
 
 }  // namespace
 
-void IcpParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) {
-  rejectUnknownKeys(c, s, {"target_points", "max_iterations", "max_distance", "max_depth"});
-  MRPT_LOAD_CONFIG_VAR_CS(target_points, int);
-  MRPT_LOAD_CONFIG_VAR_CS(max_iterations, int);
-  MRPT_LOAD_CONFIG_VAR_CS(max_distance, double);
-  MRPT_LOAD_CONFIG_VAR_CS(max_depth, double);
-  requireValid(target_points >= 100, s, "target_points", target_points, "must be >= 100");
-  requireValid(max_iterations >= 1, s, "max_iterations", max_iterations, "must be >= 1");
-  requireValid(max_distance > 0, s, "max_distance", max_distance, "must be > 0 m");
-  requireValid(max_depth > 0, s, "max_depth", max_depth, "must be > 0 m");
-}
-
-void IcpParams::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const {
-  MRPT_SAVE_CONFIG_VAR_COMMENT(target_points, "[count] points per cloud after down-sampling");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(max_iterations, "ICP iterations");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(max_distance, "[m] initial pairing distance");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(max_depth, "[m] farther points unused");
-}
-
 IcpResult refineIcp(const RgbdImage& source, const RgbdImage& target,
                     const Eigen::Isometry3d& initial, const IcpParams& p) {
   const auto ms = cloudOf(source, p.target_points, p.max_depth);

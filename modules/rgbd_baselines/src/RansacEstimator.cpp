@@ -6,32 +6,6 @@
 
 namespace hrgbd {
 
-void RansacParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
-                                      const std::string& s) {
-  rejectUnknownKeys(
-      c, s, {"iterations", "inlier_threshold", "min_matches", "min_inliers", "min_spread", "seed"});
-  MRPT_LOAD_CONFIG_VAR_CS(iterations, int);
-  MRPT_LOAD_CONFIG_VAR_CS(inlier_threshold, double);
-  MRPT_LOAD_CONFIG_VAR_CS(min_matches, int);
-  MRPT_LOAD_CONFIG_VAR_CS(min_inliers, int);
-  MRPT_LOAD_CONFIG_VAR_CS(min_spread, double);
-  MRPT_LOAD_CONFIG_VAR_CS(seed, int);
-  requireValid(iterations >= 1, s, "iterations", iterations, "must be >= 1");
-  requireValid(inlier_threshold > 0, s, "inlier_threshold", inlier_threshold, "must be > 0 m");
-  requireValid(min_matches >= 3, s, "min_matches", min_matches, "must be >= 3");
-  requireValid(min_inliers >= 3, s, "min_inliers", min_inliers, "must be >= 3");
-  requireValid(min_spread >= 0, s, "min_spread", min_spread, "must be >= 0 m");
-}
-
-void RansacParams::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const {
-  MRPT_SAVE_CONFIG_VAR_COMMENT(iterations, "random 3-point hypotheses");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(inlier_threshold, "[m] inlier residual threshold");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(min_matches, "fewer matches: frame not registered");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(min_inliers, "fewer inliers: frame not registered");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(min_spread, "[m] smallest triangle height of a sample");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(seed, "random seed");
-}
-
 RigidEstimate estimateRansac(const Correspondences& c, const RansacParams& p) {
   RigidEstimate out;
   const std::size_t n = c.size();

@@ -13,38 +13,6 @@
 
 namespace hrgbd {
 
-void TumSourceParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
-                                         const std::string& s) {
-  rejectUnknownKeys(c, s,
-                    {"max_time_difference", "depth_factor", "intrinsics", "fx", "fy", "cx", "cy"});
-  MRPT_LOAD_CONFIG_VAR_CS(max_time_difference, double);
-  MRPT_LOAD_CONFIG_VAR_CS(depth_factor, double);
-  MRPT_LOAD_CONFIG_VAR_CS(intrinsics, string);
-  MRPT_LOAD_CONFIG_VAR_CS(fx, double);
-  MRPT_LOAD_CONFIG_VAR_CS(fy, double);
-  MRPT_LOAD_CONFIG_VAR_CS(cx, double);
-  MRPT_LOAD_CONFIG_VAR_CS(cy, double);
-  requireValid(max_time_difference > 0 && max_time_difference < 1, s, "max_time_difference",
-               max_time_difference, "must be in (0, 1) s");
-  requireValid(depth_factor > 0, s, "depth_factor", depth_factor, "must be > 0");
-  requireValid(fx > 0 && fy > 0, s, "fx", fx, "focal lengths must be > 0");
-  const std::vector<std::string> names{"auto", "fr1", "fr2", "fr3", "ros_default", "explicit"};
-  if (std::find(names.begin(), names.end(), intrinsics) == names.end())
-    throw ConfigError("[" + s + "] intrinsics = " + intrinsics +
-                      ": must be auto, fr1, fr2, fr3, ros_default or explicit");
-}
-
-void TumSourceParams::saveToConfigFile(mrpt::config::CConfigFileBase& c,
-                                       const std::string& s) const {
-  MRPT_SAVE_CONFIG_VAR_COMMENT(max_time_difference, "[s] max colour/depth time difference");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(depth_factor, "[units/m] depth PNG value / factor = metres");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(intrinsics, "auto|fr1|fr2|fr3|ros_default|explicit");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(fx, "[px] only with intrinsics = explicit");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(fy, "[px] only with intrinsics = explicit");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(cx, "[px] only with intrinsics = explicit");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(cy, "[px] only with intrinsics = explicit");
-}
-
 TumSource::TumSource(const std::string& folder, const TumSourceParams& params)
     : m_folder(folder), m_params(params) {
   if (!mrpt::system::directoryExists(folder))

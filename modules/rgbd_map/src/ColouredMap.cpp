@@ -15,23 +15,8 @@
 
 namespace hrgbd {
 
-void MapParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) {
-  rejectUnknownKeys(c, s, {"voxel_size", "pixel_stride", "min_depth", "max_depth"});
-  MRPT_LOAD_CONFIG_VAR_CS(voxel_size, double);
-  MRPT_LOAD_CONFIG_VAR_CS(pixel_stride, int);
-  MRPT_LOAD_CONFIG_VAR_CS(min_depth, double);
-  MRPT_LOAD_CONFIG_VAR_CS(max_depth, double);
-  requireValid(voxel_size >= 0.001, s, "voxel_size", voxel_size, "must be >= 0.001 m");
-  requireValid(pixel_stride >= 1, s, "pixel_stride", pixel_stride, "must be >= 1");
-  requireValid(min_depth >= 0, s, "min_depth", min_depth, "must be >= 0 m");
+void MapParams::checkTogether(const std::string& s) const {
   requireValid(max_depth > min_depth, s, "max_depth", max_depth, "must be > min_depth");
-}
-
-void MapParams::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const {
-  MRPT_SAVE_CONFIG_VAR_COMMENT(voxel_size, "[m] one map point per voxel");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(pixel_stride, "[px] every n-th pixel is inserted");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(min_depth, "[m]");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(max_depth, "[m]");
 }
 
 ColouredMap::ColouredMap(const MapParams& params) : m_params(params) {}

@@ -8,40 +8,6 @@
 
 namespace hrgbd {
 
-void MsseParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) {
-  rejectUnknownKeys(c, s,
-                    {"hypotheses", "k_fraction", "T", "min_matches", "min_inliers", "min_spread",
-                     "depth_weighting", "seed", "max_scale"});
-  MRPT_LOAD_CONFIG_VAR_CS(hypotheses, int);
-  MRPT_LOAD_CONFIG_VAR_CS(k_fraction, double);
-  MRPT_LOAD_CONFIG_VAR_CS(T, double);
-  MRPT_LOAD_CONFIG_VAR_CS(min_matches, int);
-  MRPT_LOAD_CONFIG_VAR_CS(min_inliers, int);
-  MRPT_LOAD_CONFIG_VAR_CS(min_spread, double);
-  MRPT_LOAD_CONFIG_VAR_CS(depth_weighting, bool);
-  MRPT_LOAD_CONFIG_VAR_CS(seed, int);
-  MRPT_LOAD_CONFIG_VAR_CS(max_scale, double);
-  requireValid(hypotheses >= 1, s, "hypotheses", hypotheses, "must be >= 1");
-  requireValid(k_fraction > 0 && k_fraction <= 1, s, "k_fraction", k_fraction, "must be in (0, 1]");
-  requireValid(T > 0, s, "T", T, "must be > 0");
-  requireValid(min_matches >= 7, s, "min_matches", min_matches, "must be >= 7 (p = 6 plus one)");
-  requireValid(min_inliers >= 3, s, "min_inliers", min_inliers, "must be >= 3");
-  requireValid(min_spread >= 0, s, "min_spread", min_spread, "must be >= 0 m");
-  requireValid(max_scale > 0, s, "max_scale", max_scale, "must be > 0 m");
-}
-
-void MsseParams::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const {
-  MRPT_SAVE_CONFIG_VAR_COMMENT(hypotheses, "random 3-point hypotheses");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(k_fraction, "k' / number of matches (least k'-th order residual)");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(T, "MSSE threshold of eq. (4)");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(min_matches, "fewer matches: frame not registered");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(min_inliers, "fewer inliers: frame not registered");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(min_spread, "[m] smallest triangle height of a 3-point sample");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(depth_weighting, "weights 1/(zs^2+zt^2) in eq. (6)");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(seed, "random seed");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(max_scale, "[m] larger inlier sigma: fit rejected");
-}
-
 std::size_t msseInlierCount(const std::vector<double>& r, std::size_t k, double T, int p,
                             double* sigma_out) {
   const std::size_t n = r.size();

@@ -18,35 +18,6 @@
 
 namespace hrgbd::sim {
 
-void SimParams::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) {
-  auto keys = KinectModel::keys();
-  keys.insert(keys.end(), {"scene", "far", "frames", "fps", "seed", "motion"});
-  rejectUnknownKeys(c, s, keys);
-  MRPT_LOAD_CONFIG_VAR_CS(scene, string);
-  MRPT_LOAD_CONFIG_VAR_CS(far, bool);
-  MRPT_LOAD_CONFIG_VAR_CS(frames, int);
-  MRPT_LOAD_CONFIG_VAR_CS(fps, double);
-  MRPT_LOAD_CONFIG_VAR_CS(seed, int);
-  MRPT_LOAD_CONFIG_VAR_CS(motion, string);
-  const auto& types = sceneTypes();
-  if (std::find(types.begin(), types.end(), scene) == types.end())
-    throw ConfigError("[" + s + "] scene = " + scene +
-                      ": must be texture, structure, structure_texture, desk, wall or object");
-  requireValid(frames >= 1, s, "frames", frames, "must be >= 1");
-  requireValid(fps > 0 && fps <= 1000, s, "fps", fps, "must be in (0, 1000] Hz");
-  sensor.loadFromConfigFile(c, s);
-}
-
-void SimParams::saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const {
-  MRPT_SAVE_CONFIG_VAR_COMMENT(scene, "texture|structure|structure_texture|desk|wall|object");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(far, "camera at ~2 m (true) or ~1 m (false)");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(frames, "[count] frames to render");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(fps, "[Hz] frame rate");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(seed, "noise and jitter seed");
-  MRPT_SAVE_CONFIG_VAR_COMMENT(motion, "sweep, or a TUM trajectory file to replay");
-  sensor.saveToConfigFile(c, s);
-}
-
 mrpt::poses::CPose3D lookAt(const Eigen::Vector3d& eye, const Eigen::Vector3d& target) {
   const Eigen::Vector3d z = (target - eye).normalized();
   const Eigen::Vector3d x = z.cross(Eigen::Vector3d::UnitZ()).normalized();  // right

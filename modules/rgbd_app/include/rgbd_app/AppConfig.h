@@ -1,19 +1,16 @@
 #pragma once
 /** \file AppConfig.h
- * The configuration file as the apps see it: known sections, loading, the effective INI text. */
+ * The configuration file as the apps see it: loading with the section check of the configuration
+ * layer (knownConfigSections() in rgbd_core/Config.h), the effective INI text. */
 #include <mrpt/config/CConfigFileBase.h>
 
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "rgbd_core/Config.h"
+
 namespace hrgbd {
-
-/** INI sections this project knows; any other section in a config file is an error. */
-const std::vector<std::string>& knownConfigSections();
-
-/** Throws ConfigError if `cfg` has a section not in knownConfigSections(). */
-void rejectUnknownSections(const mrpt::config::CConfigFileBase& cfg);
 
 /** Loads `file` ("" = built-in defaults) and rejects unknown sections (ConfigError). */
 std::unique_ptr<mrpt::config::CConfigFileBase> loadChecked(const std::string& file);

@@ -3,14 +3,13 @@
  * Classic RANSAC rigid estimator, the paper's ORB+RANSAC baseline (section IV-C, Henry et al.).
  * Hand-written on the same sampler as MSSE: MRPT's se3_l2_robust votes on pose hypotheses and
  * needs >= 50 % inliers, so it is not the residual-threshold RANSAC the paper compares against. */
-#include <mrpt/config/CLoadableOptions.h>
-
+#include "rgbd_core/Params.h"
 #include "rgbd_odometry/RigidFit.h"
 
 namespace hrgbd {
 
 /** Parameters of estimateRansac(). INI section [RANSAC]. */
-struct RansacParams : public mrpt::config::CLoadableOptions {
+struct RansacParams : public Params<RansacParams> {
   int iterations = 1000;           //!< random 3-point hypotheses
   double inlier_threshold = 0.03;  //!< [m] residual below which a match supports a hypothesis
   int min_matches = 10;            //!< fewer matches -> status TooFewMatches
@@ -18,8 +17,15 @@ struct RansacParams : public mrpt::config::CLoadableOptions {
   double min_spread = 0.01;        //!< [m] smallest triangle height of a usable sample
   int seed = 1;                    //!< random generator seed
 
-  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
-  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+  template <class P, class V>
+  static void declare(P& p, V& v) {
+    HRGBD_PARAM(iterations, "random 3-point hypotheses", Range::atLeast(1));
+    HRGBD_PARAM(inlier_threshold, "[m] inlier residual threshold", Range::above(0));
+    HRGBD_PARAM(min_matches, "fewer matches: frame not registered", Range::atLeast(3));
+    HRGBD_PARAM(min_inliers, "fewer inliers: frame not registered", Range::atLeast(3));
+    HRGBD_PARAM(min_spread, "[m] smallest triangle height of a sample", Range::atLeast(0));
+    HRGBD_PARAM(seed, "random seed");
+  }
 };
 
 /** Hypothesis with the most residuals under the threshold, refitted (unweighted) on them.

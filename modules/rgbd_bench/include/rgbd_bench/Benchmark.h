@@ -4,18 +4,19 @@
  * paper's baselines and the OpenCV contrib peers) runs through the same playback on the same
  * frames; the report gives ATE (unaligned mean, the paper's metric, and aligned RMSE), RPE,
  * time per frame, path shares and failures as markdown. `rgbd-benchmark` is a thin main. */
-#include <mrpt/config/CLoadableOptions.h>
-
 #include <iosfwd>
 #include <string>
 #include <vector>
 
 #include "rgbd_app/Playback.h"
+#include "rgbd_core/Params.h"
+#include "rgbd_odometry/OdometryParams.h"
+#include "rgbd_sim/Scene.h"
 
 namespace hrgbd {
 
 /** INI section [Benchmark]. Lists are separated by spaces; paths are relative to the INI. */
-struct BenchmarkParams : public mrpt::config::CLoadableOptions {
+struct BenchmarkParams : public Params<BenchmarkParams> {
   std::vector<std::string> methods{"hybrid",     "rgb_only",    "depth_only", "ransac",
                                    "ransac_icp", "opencv_rgbd", "opencv_icp", "opencv_rgbd_icp"};
   /** Simulated suite: these scene types (rgbd_sim::sceneTypes()), each near (~1 m) ... */
@@ -33,8 +34,20 @@ struct BenchmarkParams : public mrpt::config::CLoadableOptions {
   std::string cache_folder = "benchmark_cache";  //!< rendered simulated sequences (reused)
   std::string output_folder = "benchmark";       //!< results.md, results.csv, trajectories
 
-  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
-  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+  template <class P, class V>
+  static void declare(P& p, V& v) {
+    HRGBD_PARAM(methods, "any of [Odometry] method", OneOf{enumNameList<Method>()}, NonEmpty{});
+    HRGBD_PARAM(sim_scenes, "scene types, each near (~1 m)", OneOf{sim::sceneTypes()});
+    HRGBD_PARAM(sim_far, "also far (~2 m) texture, structure, structure_texture");
+    HRGBD_PARAM(sim_motions, "sweep and/or TUM trajectory files to replay");
+    HRGBD_PARAM(sim_frames, "[count] frames per simulated sequence (ATE needs 3 poses)",
+                Range::atLeast(3));
+    HRGBD_PARAM(sim_seed, "simulator noise seed");
+    HRGBD_PARAM(real_sequences, "TUM folders or rawlogs with ground truth");
+    HRGBD_PARAM(max_frames, "[count] per run, 0 = all", Range::atLeast(0));
+    HRGBD_PARAM(cache_folder, "rendered simulated sequences");
+    HRGBD_PARAM(output_folder, "results.md, results.csv, trajectories");
+  }
 };
 
 /** One sequence of the suite. */

@@ -1,6 +1,7 @@
 #pragma once
 /** \file Config.h
- * Strict INI loading helpers: MRPT's CLoadableOptions ignore unknown keys; ours reject them. */
+ * The configuration file: errors, the registry of INI sections, loading, and helpers of the
+ * params structs (Params.h). MRPT's CLoadableOptions ignore unknown keys; ours reject them. */
 #include <mrpt/config/CConfigFileBase.h>
 #include <mrpt/config/CLoadableOptions.h>
 #include <mrpt/typemeta/TEnumType.h>
@@ -27,14 +28,6 @@ void requireValid(bool ok, const std::string& section, const std::string& key, d
 
 /** `path` relative to `base` (the INI file's folder) unless it is empty or absolute. */
 std::string resolvePath(const std::string& base, const std::string& path);
-
-/** Loads `p` from `section` of `cfg` after checking the syntax of every value it reads, in
- * `section` and in the sections it writes back (sub-structs). MRPT itself reads "abc" or "" as 0,
- * "1,5" as 1, "2.7" as 2 for an integer and "maybe" as false; here they are a ConfigError naming
- * the key. The kind of each key (integer, real, bool, text) comes from its current value as
- * `p.saveToConfigFile()` writes it; reals must be finite. Range checks stay in `p`'s loader. */
-void loadStrict(mrpt::config::CLoadableOptions& p, const mrpt::config::CConfigFileBase& cfg,
-                const std::string& section);
 
 /** Every name of an enum declared with MRPT_ENUM_TYPE_BEGIN / MRPT_FILL_ENUM_CUSTOM_NAME, in
  * declaration order, joined by `sep`: the allowed values for INI files and command lines. */
@@ -66,5 +59,13 @@ void loadEnum(const mrpt::config::CConfigFileBase& c, const std::string& section
 
 /** Loads an INI file, throwing ConfigError if it is missing or unreadable. */
 std::unique_ptr<mrpt::config::CConfigFileBase> loadIniFile(const std::string& path);
+
+/** Every INI section any app of this project reads, so that one file can hold them all:
+ * [Playback], [Odometry] with its stage sections [ORB] [Geometric] [MSSE] [RANSAC] [ICP], [Map],
+ * [TumSource], [OpenNI2] (MRPT's COpenNI2Sensor keys), [Simulator] and [Benchmark]. */
+const std::vector<std::string>& knownConfigSections();
+
+/** Throws ConfigError naming the first section of `cfg` not in knownConfigSections(). */
+void rejectUnknownSections(const mrpt::config::CConfigFileBase& cfg);
 
 }  // namespace hrgbd

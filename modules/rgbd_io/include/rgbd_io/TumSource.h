@@ -1,18 +1,18 @@
 #pragma once
 /** \file TumSource.h
  * A TUM RGB-D dataset folder (rgb.txt, depth.txt, optional groundtruth.txt) as a FrameSource. */
-#include <mrpt/config/CLoadableOptions.h>
 #include <mrpt/img/TCamera.h>
 
 #include <vector>
 
+#include "rgbd_core/Params.h"
 #include "rgbd_io/FrameSource.h"
 #include "rgbd_io/TumLists.h"
 
 namespace hrgbd {
 
 /** Parameters of TumSource. INI section [TumSource]. */
-struct TumSourceParams : public mrpt::config::CLoadableOptions {
+struct TumSourceParams : public Params<TumSourceParams> {
   double max_time_difference = 0.02;  //!< [s] colour/depth pairs further apart are not associated
   double depth_factor = 5000.0;       //!< [units per metre] depth PNG value / factor = metres
   /** auto (from the folder name, else ros_default), fr1, fr2, fr3, ros_default, or explicit
@@ -21,8 +21,17 @@ struct TumSourceParams : public mrpt::config::CLoadableOptions {
   double fx = 525.0, fy = 525.0;  //!< [px] focal lengths, only with intrinsics = explicit
   double cx = 319.5, cy = 239.5;  //!< [px] principal point, only with intrinsics = explicit
 
-  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
-  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+  template <class P, class V>
+  static void declare(P& p, V& v) {
+    HRGBD_PARAM(max_time_difference, "[s] max colour/depth time difference", Range::open(0, 1));
+    HRGBD_PARAM(depth_factor, "[units/m] depth PNG value / factor = metres", Range::above(0));
+    HRGBD_PARAM(intrinsics, "camera of the folder",
+                OneOf{{"auto", "fr1", "fr2", "fr3", "ros_default", "explicit"}});
+    HRGBD_PARAM(fx, "[px] only with intrinsics = explicit", Range::above(0));
+    HRGBD_PARAM(fy, "[px] only with intrinsics = explicit", Range::above(0));
+    HRGBD_PARAM(cx, "[px] only with intrinsics = explicit");
+    HRGBD_PARAM(cy, "[px] only with intrinsics = explicit");
+  }
 };
 
 class TumSource : public FrameSource {

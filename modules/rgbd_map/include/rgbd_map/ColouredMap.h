@@ -4,7 +4,6 @@
  * CColouredPointsMap, decimated to one point per voxel so memory is bounded by the volume seen,
  * not by the number of frames. Exports to PLY (MeshLab, CloudCompare) and .3Dscene
  * (SceneViewer3D). Coordinates: the MRPT world of opticalToMrptWorld() (z up). */
-#include <mrpt/config/CLoadableOptions.h>
 #include <mrpt/maps/CColouredPointsMap.h>
 #include <mrpt/obs/CObservation3DRangeScan.h>
 #include <mrpt/opengl/CSetOfObjects.h>
@@ -15,17 +14,26 @@
 #include <unordered_set>
 #include <vector>
 
+#include "rgbd_core/Params.h"
+
 namespace hrgbd {
 
 /** Parameters of ColouredMap. INI section [Map]. */
-struct MapParams : public mrpt::config::CLoadableOptions {
+struct MapParams : public Params<MapParams> {
   double voxel_size = 0.02;  //!< [m] one point per cubic voxel of this side
   int pixel_stride = 2;      //!< [px] every n-th pixel in u and v is inserted
   double min_depth = 0.3;    //!< [m] nearer pixels are not inserted
   double max_depth = 4.0;    //!< [m] farther pixels are not inserted (Kinect noise grows as z^2)
 
-  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
-  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+  template <class P, class V>
+  static void declare(P& p, V& v) {
+    HRGBD_PARAM(voxel_size, "[m] one map point per voxel", Range::atLeast(0.001));
+    HRGBD_PARAM(pixel_stride, "[px] every n-th pixel is inserted", Range::atLeast(1));
+    HRGBD_PARAM(min_depth, "[m] nearer pixels are not inserted", Range::atLeast(0));
+    HRGBD_PARAM(max_depth, "[m] farther pixels are not inserted, > min_depth");
+  }
+  /** max_depth > min_depth. */
+  void checkTogether(const std::string& s) const;
 };
 
 class ColouredMap {

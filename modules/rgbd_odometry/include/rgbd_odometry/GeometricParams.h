@@ -2,12 +2,12 @@
 /** \file GeometricParams.h
  * Parameters of the geometric path (paper sections III-C to III-F): down-sampling, normals,
  * IS3D sampling and SHOT descriptors. INI section [Geometric]. */
-#include <mrpt/config/CLoadableOptions.h>
+#include "rgbd_core/Params.h"
 
 namespace hrgbd {
 
 /** Parameters of extractGeometricFeatures() and its stages. INI section [Geometric]. */
-struct GeometricParams : public mrpt::config::CLoadableOptions {
+struct GeometricParams : public Params<GeometricParams> {
   // III-C: pre-processing
   double max_depth = 5.0;    //!< [m] farther points are dropped (paper III-C)
   int pixel_stride = 2;      //!< [px] every n-th depth pixel in u and v is back-projected
@@ -42,8 +42,29 @@ struct GeometricParams : public mrpt::config::CLoadableOptions {
    * (status large_residuals): a wrong match set leaves the clouds apart. */
   double refine_min_overlap = 0.5;
 
-  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
-  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+  template <class P, class V>
+  static void declare(P& p, V& v) {
+    HRGBD_PARAM(max_depth, "[m] farther points are dropped (III-C)", Range::above(0));
+    HRGBD_PARAM(pixel_stride, "[px] every n-th depth pixel is back-projected",
+                Range::closed(1, 16));
+    HRGBD_PARAM(target_points, "[count] wanted after down-sampling", Range::atLeast(100));
+    HRGBD_PARAM(normal_radius_factor, "normal neighbourhood / cell size (III-D)",
+                Range::atLeast(1));
+    HRGBD_PARAM(is3d_points, "[count] most IS3D points kept", Range::atLeast(10));
+    HRGBD_PARAM(is3d_references, "reference normals tried per orientation", Range::atLeast(1));
+    HRGBD_PARAM(is3d_k_fraction, "k' / points of a dominant orientation", Range::open(0, 1));
+    HRGBD_PARAM(is3d_max_group_angle_deg, "[deg] k'-th residual limit", Range::open(0, 90));
+    HRGBD_PARAM(is3d_T, "MSSE threshold of eq. (4)", Range::above(0));
+    HRGBD_PARAM(is3d_max_groups, "most dominant orientations removed", Range::atLeast(0));
+    HRGBD_PARAM(shot_radius_factor, "SHOT support radius / cell size", Range::atLeast(1));
+    HRGBD_PARAM(shot_min_neighbours, "fewer support points: keypoint dropped", Range::atLeast(3));
+    HRGBD_PARAM(max_descriptor_distance, "L2 SHOT match limit", Range::above(0));
+    HRGBD_PARAM(seed, "random seed");
+    HRGBD_PARAM(refine_iterations, "point-to-plane ICP after MSSE, 0 = paper", Range::atLeast(0));
+    HRGBD_PARAM(refine_max_distance, "[m] ICP pairing distance", Range::above(0));
+    HRGBD_PARAM(refine_min_overlap, "paired share of the cloud; less: rejected",
+                Range::closed(0, 1));
+  }
 };
 
 }  // namespace hrgbd

@@ -2,14 +2,13 @@
 /** \file MsseEstimator.h
  * The MSSE robust rigid estimator (paper section III-G, eqs. 4-7; Bab-Hadiashar & Suter 1999).
  * No library here has it. */
-#include <mrpt/config/CLoadableOptions.h>
-
+#include "rgbd_core/Params.h"
 #include "rgbd_odometry/RigidFit.h"
 
 namespace hrgbd {
 
 /** Parameters of estimateMsse(). INI section [MSSE]. */
-struct MsseParams : public mrpt::config::CLoadableOptions {
+struct MsseParams : public Params<MsseParams> {
   int hypotheses = 1000;  //!< random 3-point hypotheses
   /** k' as a fraction of the matches: hypotheses are ranked by their k'-th smallest squared
    * residual and MSSE grows the inliers from k'. A trade-off, measured: on fr3/teddy (ORB
@@ -29,8 +28,20 @@ struct MsseParams : public mrpt::config::CLoadableOptions {
   bool depth_weighting = true;  //!< eq. (6) weights from depth (else all 1)
   int seed = 1;                 //!< random generator seed (same seed, same result)
 
-  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
-  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+  template <class P, class V>
+  static void declare(P& p, V& v) {
+    HRGBD_PARAM(hypotheses, "random 3-point hypotheses", Range::atLeast(1));
+    HRGBD_PARAM(k_fraction, "k' / number of matches (least k'-th order residual)",
+                Range::openClosed(0, 1));
+    HRGBD_PARAM(T, "MSSE threshold of eq. (4)", Range::above(0));
+    HRGBD_PARAM(min_matches, "fewer matches: frame not registered (p = 6 plus one at least)",
+                Range::atLeast(7));
+    HRGBD_PARAM(min_inliers, "fewer inliers: frame not registered", Range::atLeast(3));
+    HRGBD_PARAM(min_spread, "[m] smallest triangle height of a 3-point sample", Range::atLeast(0));
+    HRGBD_PARAM(depth_weighting, "weights 1/(zs^2+zt^2) in eq. (6)");
+    HRGBD_PARAM(seed, "random seed");
+    HRGBD_PARAM(max_scale, "[m] larger inlier sigma: fit rejected", Range::above(0));
+  }
 };
 
 /** MSSE: hypotheses from random 3-tuples (eq. 6, weighted), the one with the least k'-th order

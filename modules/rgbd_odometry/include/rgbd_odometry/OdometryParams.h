@@ -1,19 +1,20 @@
 #pragma once
 /** \file OdometryParams.h
  * Parameters of the odometry: INI section [Odometry] and the stage sections it owns. */
-#include <mrpt/config/CLoadableOptions.h>
-
 #include <string>
 
+#include "rgbd_core/Params.h"
 #include "rgbd_odometry/GeometricParams.h"
 #include "rgbd_odometry/MsseEstimator.h"
 #include "rgbd_odometry/OrbFeatures.h"
 
 namespace hrgbd {
 
-/** Registration methods: the paper's and its baselines (Tables I and II). */
+/** Registration methods: the paper's, its baselines (Tables I and II) and OpenCV contrib's dense
+ * odometries as peers. INI key [Odometry] method, names below (MRPT_FILL_ENUM_CUSTOM_NAME). */
 enum class Method {
-  Hybrid,     //!< ORB + MSSE; geometric features when too few ORB features (paper)
+  Hybrid,     //!< ORB + MSSE; geometric features when too few ORB features (paper), see
+              //!< min_photometric_inliers and geometric_fallback for the additions
   RgbOnly,    //!< ORB + MSSE always
   DepthOnly,  //!< geometric (IS3D + SHOT) + MSSE always
   Ransac,     //!< ORB + RANSAC
@@ -34,37 +35,9 @@ enum class FailurePolicy {
   Hold,              //!< the pose stays where it was
 };
 
-/** Parameters of RgbdOdometry. INI section [Odometry]; the stages read [ORB], [Geometric] and
- * [MSSE]. The baselines' [RANSAC] and [ICP] are BaselineParams (rgbd_baselines). */
-struct OdometryParams : public mrpt::config::CLoadableOptions {
-  Method method = Method::Hybrid;
-  int min_orb_features = 50;  //!< [count] fewer ORB features with depth -> geometric path
-  /** hybrid only: a photometric registration with fewer inliers is replaced by the geometric
-   * path's when that registers (not in the paper; 0 = off). Measured: every good photometric
-   * frame had >= 143 inliers, the far plain zig-zag's 9-26. */
-  int min_photometric_inliers = 30;
-  /** hybrid only: when the photometric path cannot register a frame (too few matches or
-   * inliers, ...), try the geometric path before giving up. The paper switches on the feature
-   * count alone (false reproduces it). */
-  bool geometric_fallback = true;
-  /** k' of MSSE on geometric (SHOT) matches, which are mostly outliers (50-80 % measured on the
-   * simulated zig-zag and fr3/cabinet), beyond what k_fraction = 0.5 survives. */
-  double geometric_k_fraction = 0.2;
-  int max_hamming_distance = 64;  //!< [bits] ORB pairs farther apart are never matched
-  FailurePolicy on_failure = FailurePolicy::ConstantVelocity;  //!< pose of unregistered frames
-  double max_step_translation = 0.5;  //!< [m] larger frame-to-frame motion is flagged as failure
-  double max_step_rotation_deg = 30;  //!< [deg] larger frame-to-frame rotation is flagged too
-  OrbParams orb;
-  GeometricParams geometric;
-  MsseParams msse;
-
-  /** Loads [Odometry] from `s` and the stage sections [ORB], [Geometric], [MSSE]. */
-  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
-  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
-};
-
 }  // namespace hrgbd
 
+// The INI and command-line names of the enums (MRPT's TEnumType, as read_enum uses).
 MRPT_ENUM_TYPE_BEGIN(hrgbd::Method)
 MRPT_FILL_ENUM_CUSTOM_NAME(hrgbd::Method::Hybrid, "hybrid");
 MRPT_FILL_ENUM_CUSTOM_NAME(hrgbd::Method::RgbOnly, "rgb_only");
@@ -80,3 +53,51 @@ MRPT_ENUM_TYPE_BEGIN(hrgbd::FailurePolicy)
 MRPT_FILL_ENUM_CUSTOM_NAME(hrgbd::FailurePolicy::ConstantVelocity, "constant_velocity");
 MRPT_FILL_ENUM_CUSTOM_NAME(hrgbd::FailurePolicy::Hold, "hold");
 MRPT_ENUM_TYPE_END()
+
+namespace hrgbd {
+
+/** Parameters of RgbdOdometry. INI section [Odometry]; the stages read [ORB], [Geometric] and
+ * [MSSE]. The baselines' [RANSAC] and [ICP] are BaselineParams (rgbd_baselines). */
+struct OdometryParams : public Params<OdometryParams> {
+  Method method = Method::Hybrid;  //!< registration method (all eight listed in Method)
+  int min_orb_features = 50;       //!< [count] fewer ORB features with depth -> geometric path
+  /** [count] hybrid only: a photometric registration with fewer inliers is replaced by the
+   * geometric path's when that registers (not in the paper; 0 = off). Measured: every good
+   * photometric frame had >= 143 inliers, the far plain zig-zag's 9-26. */
+  int min_photometric_inliers = 30;
+  /** hybrid only: when the photometric path cannot register a frame (too few matches or
+   * inliers, ...), try the geometric path before giving up. The paper switches on the feature
+   * count alone (false reproduces it). */
+  bool geometric_fallback = true;
+  /** k' of MSSE on geometric (SHOT) matches, which are mostly outliers (50-80 % measured on the
+   * simulated zig-zag and fr3/cabinet), beyond what k_fraction = 0.5 survives. */
+  double geometric_k_fraction = 0.2;
+  int max_hamming_distance = 64;  //!< [bits] ORB pairs farther apart are never matched
+  FailurePolicy on_failure = FailurePolicy::ConstantVelocity;  //!< pose of unregistered frames
+  double max_step_translation = 0.5;  //!< [m] larger frame-to-frame motion is flagged as failure
+  double max_step_rotation_deg = 30;  //!< [deg] larger frame-to-frame rotation is flagged too
+  OrbParams orb;                      //!< section [ORB]
+  GeometricParams geometric;          //!< section [Geometric]
+  MsseParams msse;                    //!< section [MSSE]
+
+  template <class P, class V>
+  static void declare(P& p, V& v) {
+    HRGBD_PARAM(method, "registration method");
+    HRGBD_PARAM(min_orb_features, "[count] fewer ORB features: geometric path", Range::atLeast(0));
+    HRGBD_PARAM(min_photometric_inliers,
+                "[count] hybrid: fewer photometric inliers: geometric if it works (0 = off)",
+                Range::atLeast(0));
+    HRGBD_PARAM(geometric_fallback, "hybrid: photometric failure -> geometric");
+    HRGBD_PARAM(geometric_k_fraction, "k' of MSSE on SHOT matches", Range::openClosed(0, 1));
+    HRGBD_PARAM(max_hamming_distance, "[bits] ORB match limit", Range::openClosed(0, 256));
+    HRGBD_PARAM(on_failure, "pose of unregistered frames");
+    HRGBD_PARAM(max_step_translation, "[m] larger motion per frame: failure", Range::above(0));
+    HRGBD_PARAM(max_step_rotation_deg, "[deg] larger rotation per frame: failure",
+                Range::openClosed(0, 180));
+    v.section(p.orb, "ORB");
+    v.section(p.geometric, "Geometric");
+    v.section(p.msse, "MSSE");
+  }
+};
+
+}  // namespace hrgbd

@@ -2,7 +2,7 @@
 /** \file Render.h
  * Ideal (noise-free) ray-cast rendering of a Scene, and the Kinect-like sensor model applied to
  * it. Hand-written: no Debian library here renders depth with a Kinect noise model. */
-#include <mrpt/config/CLoadableOptions.h>
+
 #include <mrpt/poses/CPose3D.h>
 
 #include <Eigen/Geometry>
@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "rgbd_core/Params.h"
 #include "rgbd_core/PinholeCamera.h"
 #include "rgbd_core/Trajectory.h"
 #include "rgbd_sim/Scene.h"
@@ -32,8 +33,8 @@ IdealFrame renderIdeal(const Scene& scene, const mrpt::poses::CPose3D& pose,
                        const PinholeCamera& cam,
                        const std::optional<mrpt::poses::CPose3D>& last_row_pose = std::nullopt);
 
-/** Kinect (structured light) parameters. INI section [Simulator], the key is the field name. */
-struct KinectModel : public mrpt::config::CLoadableOptions {
+/** Kinect (structured light) parameters. INI section [Simulator] (merged into SimParams). */
+struct KinectModel : public Params<KinectModel> {
   double baseline = 0.075;                   //!< [m] projector-camera baseline
   double disparity_step = 0.125;             //!< [px] disparity quantisation (1/8 px)
   double disparity_noise = 0.06;             //!< [px] per-pixel disparity noise (std)
@@ -61,10 +62,31 @@ struct KinectModel : public mrpt::config::CLoadableOptions {
   double rolling_shutter_ms = 30;
   double auto_exposure = 0.06;  //!< relative amplitude of slow gain changes
 
-  /** The INI keys loadFromConfigFile() reads. */
-  static const std::vector<std::string>& keys();
-  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
-  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+  template <class P, class V>
+  static void declare(P& p, V& v) {
+    const auto px5 = Range::closed(0, 5);
+    HRGBD_PARAM(baseline, "[m] projector-camera baseline", Range::open(0, 1));
+    HRGBD_PARAM(disparity_step, "[px] disparity quantisation (0 = not quantised)",
+                Range::closed(0, 1));
+    HRGBD_PARAM(disparity_noise, "[px] per-pixel disparity noise (std)", px5);
+    HRGBD_PARAM(disparity_noise_correlated, "[px] smooth noise field (std)", px5);
+    HRGBD_PARAM(correlation_window, "[px] block-matching window (1 = none)", Range::closed(1, 31));
+    HRGBD_PARAM(disparity_distortion, "[px] fixed-pattern disparity error (std)", px5);
+    HRGBD_PARAM(edge_fattening, "[px] foreground depth spreads this far", Range::closed(0, 15));
+    HRGBD_PARAM(min_depth, "[m] no depth nearer", Range::above(0));
+    HRGBD_PARAM(max_depth, "[m] no depth farther, > min_depth");
+    HRGBD_PARAM(min_incidence, "|cos| of grazing incidence without depth", Range::closedOpen(0, 1));
+    HRGBD_PARAM(edge_dropout, "probability of no depth at a discontinuity", Range::atLeast(0));
+    HRGBD_PARAM(flying_pixels, "probability of a mixed depth at a discontinuity; sum <= 1",
+                Range::atLeast(0));
+    HRGBD_PARAM(colour_noise, "[grey levels] colour noise (std)", Range::closed(0, 50));
+    HRGBD_PARAM(exposure_ms, "[ms] exposure (motion blur)", Range::closed(0, 100));
+    HRGBD_PARAM(rolling_shutter_ms, "[ms] readout, first to last row (0 = global)",
+                Range::closed(0, 100));
+    HRGBD_PARAM(auto_exposure, "relative amplitude of slow gain changes", Range::closedOpen(0, 1));
+  }
+  /** max_depth > min_depth; edge_dropout + flying_pixels <= 1. */
+  void checkTogether(const std::string& s) const;
 };
 
 /** One frame's inputs to applyKinectModel() besides the ideal render. */

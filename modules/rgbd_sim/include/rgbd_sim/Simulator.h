@@ -2,10 +2,9 @@
 /** \file Simulator.h
  * RGB-D sequences with exact ground truth: a Scene, a camera path (procedural sweep or replayed
  * real hand-held motion) and the Kinect model, written as a rawlog and/or a TUM folder. */
-#include <mrpt/config/CLoadableOptions.h>
-
 #include <string>
 
+#include "rgbd_core/Params.h"
 #include "rgbd_core/Trajectory.h"
 #include "rgbd_io/RawlogWriter.h"
 #include "rgbd_sim/Render.h"
@@ -13,7 +12,7 @@
 namespace hrgbd::sim {
 
 /** Parameters of simulate(). INI section [Simulator]. */
-struct SimParams : public mrpt::config::CLoadableOptions {
+struct SimParams : public Params<SimParams> {
   std::string scene = "desk";  //!< texture|structure|structure_texture|desk|wall|object
   bool far = false;            //!< camera at ~2 m instead of ~1 m
   int frames = 30;             //!< [count]
@@ -22,10 +21,18 @@ struct SimParams : public mrpt::config::CLoadableOptions {
   /** "sweep" (procedural sweep along the structure with hand-held jitter) or a TUM trajectory
    * file whose motion is replayed, moved so that the point it looked at is the scene's look_at. */
   std::string motion = "sweep";
-  KinectModel sensor;
+  KinectModel sensor;  //!< its keys are in this section too
 
-  void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override;
-  void saveToConfigFile(mrpt::config::CConfigFileBase& c, const std::string& s) const override;
+  template <class P, class V>
+  static void declare(P& p, V& v) {
+    HRGBD_PARAM(scene, "scene type", OneOf{sceneTypes()});
+    HRGBD_PARAM(far, "camera at ~2 m (true) or ~1 m (false)");
+    HRGBD_PARAM(frames, "[count] frames to render", Range::atLeast(1));
+    HRGBD_PARAM(fps, "[Hz] frame rate", Range::openClosed(0, 1000));
+    HRGBD_PARAM(seed, "noise and jitter seed");
+    HRGBD_PARAM(motion, "sweep, or a TUM trajectory file to replay");
+    v.merge(p.sensor);  // the sensor model's keys are in the same section
+  }
 };
 
 /** Camera trajectory (optical frame in the world) sampled at `times`. */
