@@ -20,6 +20,68 @@ double angle(const Eigen::Vector3f& a, const Eigen::Vector3f& b) {
 
 constexpr int kOrientationDim = 2;  // p of eq. (5): a direction has two degrees of freedom
 
+// Algorithm 1 lines 5-13: of `references` random candidates, the one with the least k'-th order
+// squared angular residual over `rest`; returns it and that residual [rad^2].
+std::pair<std::size_t, double> bestReference(const Points& normals,
+                                             const std::vector<std::size_t>& rest, std::size_t k,
+                                             int references, std::mt19937& rng) {
+  double best = std::numeric_limits<double>::infinity();
+  std::size_t best_ref = rest.front();
+  std::uniform_int_distribution<std::size_t> pick(0, rest.size() - 1);
+  std::vector<double> r2(rest.size());
+  for (int i = 0; i < references; ++i) {
+    const std::size_t ref = rest[pick(rng)];
+    for (std::size_t j = 0; j < rest.size(); ++j) {
+      const double phi = angle(normals[ref], normals[rest[j]]);
+      r2[j] = phi * phi;
+    }
+    std::nth_element(r2.begin(), r2.begin() + (k - 1), r2.end());
+    if (r2[k - 1] < best) best = r2[k - 1], best_ref = ref;
+  }
+  return {best_ref, best};
+}
+
+// Line 14: eqs. (4)-(5) on the sorted residuals to `ref` separate its group, which is appended
+// to `groups` and removed from `rest`. False (nothing changed) when the group's scale exceeds
+// `max_angle`: growth through a continuum of orientations (the edges left after the planes) ends
+// with a wide scale, and that is no dominant orientation either.
+bool separateGroup(const Points& normals, std::size_t ref, std::size_t k, double T,
+                   double max_angle, std::vector<std::size_t>& rest,
+                   std::vector<DominantOrientation>& groups) {
+  std::vector<std::pair<double, std::size_t>> res(rest.size());
+  for (std::size_t j = 0; j < rest.size(); ++j)
+    res[j] = {angle(normals[ref], normals[rest[j]]), rest[j]};
+  std::sort(res.begin(), res.end());
+  std::vector<double> sorted(res.size());
+  for (std::size_t j = 0; j < res.size(); ++j) sorted[j] = res[j].first;
+  double sigma = 0;
+  const std::size_t members = msseInlierCount(sorted, k, T, kOrientationDim, &sigma);
+  if (sigma > max_angle) return false;
+  groups.push_back({normals[ref], members, mrpt::RAD2DEG(sigma)});
+  rest.clear();
+  for (std::size_t j = members; j < res.size(); ++j) rest.push_back(res[j].second);
+  return true;
+}
+
+// The `count` points of `rest` farthest (in angle) from every dominant orientation: a random
+// subset would differ between frames and halve the keypoints' repeatability (measured on the
+// simulated zig-zag).
+std::vector<std::size_t> farthestFromGroups(const Points& normals,
+                                            const std::vector<std::size_t>& rest,
+                                            const std::vector<DominantOrientation>& groups,
+                                            int count) {
+  std::vector<std::pair<double, std::size_t>> ranked;
+  for (const std::size_t j : rest) {
+    double nearest = M_PI;
+    for (const auto& g : groups) nearest = std::min(nearest, angle(g.normal, normals[j]));
+    ranked.push_back({-nearest, j});
+  }
+  std::nth_element(ranked.begin(), ranked.begin() + count, ranked.end());
+  std::vector<std::size_t> out;
+  for (int j = 0; j < count; ++j) out.push_back(ranked[j].second);
+  return out;
+}
+
 }  // namespace
 
 Is3dResult sampleIs3d(const Points& normals, const GeometricParams& p) {
@@ -30,57 +92,15 @@ Is3dResult sampleIs3d(const Points& normals, const GeometricParams& p) {
   const double max_angle = mrpt::DEG2RAD(p.is3d_max_group_angle_deg);
   std::vector<std::size_t> rest(normals.size());
   std::iota(rest.begin(), rest.end(), 0);
-
-  std::vector<double> r2;
   while (static_cast<int>(out.groups.size()) < p.is3d_max_groups && rest.size() > k) {
-    // Algorithm 1 lines 5-13: the reference with the least k'-th order squared residual.
-    double best = std::numeric_limits<double>::infinity();
-    std::size_t best_ref = rest.front();
-    std::uniform_int_distribution<std::size_t> pick(0, rest.size() - 1);
-    for (int i = 0; i < p.is3d_references; ++i) {
-      const std::size_t ref = rest[pick(rng)];
-      r2.resize(rest.size());
-      for (std::size_t j = 0; j < rest.size(); ++j) {
-        const double phi = angle(normals[ref], normals[rest[j]]);
-        r2[j] = phi * phi;
-      }
-      std::nth_element(r2.begin(), r2.begin() + (k - 1), r2.end());
-      if (r2[k - 1] < best) best = r2[k - 1], best_ref = ref;
-    }
+    const auto [ref, best] = bestReference(normals, rest, k, p.is3d_references, rng);
     if (std::sqrt(best) > max_angle) break;  // nothing dominant is left
-
-    // Line 14: eqs. (4)-(5) on the winner's sorted residuals separate its group.
-    std::vector<std::pair<double, std::size_t>> res(rest.size());
-    for (std::size_t j = 0; j < rest.size(); ++j)
-      res[j] = {angle(normals[best_ref], normals[rest[j]]), rest[j]};
-    std::sort(res.begin(), res.end());
-    std::vector<double> sorted(res.size());
-    for (std::size_t j = 0; j < res.size(); ++j) sorted[j] = res[j].first;
-    double sigma = 0;
-    const std::size_t members = msseInlierCount(sorted, k, p.is3d_T, kOrientationDim, &sigma);
-    // Growth through a continuum of orientations (the edges left after the planes) ends with a
-    // wide scale: that is no dominant orientation either.
-    if (sigma > max_angle) break;
-    out.groups.push_back({normals[best_ref], members, mrpt::RAD2DEG(sigma)});
-    rest.clear();
-    for (std::size_t j = members; j < res.size(); ++j) rest.push_back(res[j].second);
+    if (!separateGroup(normals, ref, k, p.is3d_T, max_angle, rest, out.groups)) break;
   }
-
-  // Lines 15-17: the points in no dominant group. When more than is3d_points remain, keep those
-  // farthest (in angle) from every dominant orientation: a random subset would differ between
-  // frames and halve the keypoints' repeatability (measured on the simulated zig-zag).
+  // Lines 15-17: the points in no dominant group.
   out.candidates = rest.size();
-  if (rest.size() > static_cast<std::size_t>(p.is3d_points)) {
-    std::vector<std::pair<double, std::size_t>> ranked;
-    for (const std::size_t j : rest) {
-      double nearest = M_PI;
-      for (const auto& g : out.groups) nearest = std::min(nearest, angle(g.normal, normals[j]));
-      ranked.push_back({-nearest, j});
-    }
-    std::nth_element(ranked.begin(), ranked.begin() + p.is3d_points, ranked.end());
-    rest.clear();
-    for (int j = 0; j < p.is3d_points; ++j) rest.push_back(ranked[j].second);
-  }
+  if (rest.size() > static_cast<std::size_t>(p.is3d_points))
+    rest = farthestFromGroups(normals, rest, out.groups, p.is3d_points);
   std::sort(rest.begin(), rest.end());
   out.indices = std::move(rest);
   return out;
