@@ -5,8 +5,8 @@
 #include <sstream>
 
 #include "rgbd_cli/CommandLine.h"
-#include "rgbd_cli/ImageStorageNames.h"
 #include "rgbd_core/Config.h"
+#include "rgbd_io/RawlogWriter.h"
 #include "rgbd_sim/Scene.h"
 #include "rgbd_sim/Simulator.h"
 

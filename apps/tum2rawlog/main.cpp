@@ -3,9 +3,9 @@
 #include <iostream>
 
 #include "rgbd_cli/CommandLine.h"
-#include "rgbd_cli/ImageStorageNames.h"
 #include "rgbd_core/Config.h"
 #include "rgbd_io/RawlogSource.h"
+#include "rgbd_io/RawlogWriter.h"
 #include "rgbd_io/TumSource.h"
 
 int main(int argc, char** argv) {

@@ -194,7 +194,7 @@ TEST(CommandLine, UnknownOptionIsNotTakenAsAPositionalArgument) {
 }
 
 TEST(CommandLine, EnumValuesFollowTheDeclaration) {
-  EXPECT_EQ(hrgbd::enumValues<demo::Mode>(), (std::vector<std::string>{"fast", "exact"}));
+  EXPECT_EQ(hrgbd::enumNameList<demo::Mode>(), (std::vector<std::string>{"fast", "exact"}));
 }
 
 }  // namespace

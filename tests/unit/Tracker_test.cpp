@@ -30,6 +30,10 @@ class FakeRegistration : public hrgbd::Registration {
   }
   hrgbd::RegistrationResult align(hrgbd::Frame& cur, hrgbd::Frame& ref) override {
     m_log.aligned.emplace_back(cur.image.t, ref.image.t);
+    if (m_script.empty()) {
+      ADD_FAILURE() << "the tracker registered more frames than scripted";
+      return {};
+    }
     auto r = m_script.front();
     m_script.pop_front();
     return r;
@@ -46,6 +50,7 @@ hrgbd::RegistrationResult step(double x, double yaw_deg = 0, Status s = Status::
   r.T = Eigen::Translation3d(x, 0, 0) *
         Eigen::AngleAxisd(yaw_deg * M_PI / 180, Eigen::Vector3d::UnitY());
   r.detail = s == Status::Ok ? "" : "scripted failure";
+  r.inliers = 100;
   return r;
 }
 
@@ -161,4 +166,34 @@ TEST(Tracker, BaselineMethodsNeedTheBaselinesLibrary) {
   hrgbd::OdometryParams p;
   p.method = hrgbd::Method::Ransac;
   EXPECT_THROW(hrgbd::RgbdOdometry{p}, hrgbd::ConfigError);
+}
+
+TEST(Tracker, KeyframesAreKeptUntilTheyWearOut) {
+  hrgbd::OdometryParams p;
+  p.keyframe_max_translation = 0.15;
+  p.keyframe_max_rotation_deg = 5;
+  p.keyframe_min_inliers = 50;
+  auto few_inliers = step(0.02);
+  few_inliers.inliers = 10;
+  auto enough_inliers = step(0.01);
+  enough_inliers.inliers = 60;
+  // T is each frame's motion from the keyframe it was registered against.
+  const auto run =
+      track({step(0.1), step(0.2), step(0.05), step(0.06, 6), few_inliers, enough_inliers}, p);
+  const std::vector<std::pair<double, double>> pairs{{101, 100}, {102, 100}, {103, 102},
+                                                     {104, 102}, {105, 104}, {106, 105}};
+  EXPECT_EQ(run.log.aligned, pairs);
+  std::vector<bool> keyframes;
+  for (const auto& r : run.results) keyframes.push_back(r.keyframe);
+  // first frame; 0.1 m kept; 0.2 m > 0.15; kept; 6 deg > 5; 10 inliers < 50; 60 inliers kept
+  EXPECT_EQ(keyframes, (std::vector<bool>{true, false, true, false, true, true, false}));
+  EXPECT_NEAR(x(run.results[2]), 0.2, 1e-12);
+  EXPECT_NEAR(x(run.results[3]), 0.25, 1e-12);  // 0.2 (keyframe 102) + 0.05
+}
+
+TEST(Tracker, FrameToFrameMakesEveryRegisteredFrameTheReference) {
+  const auto run = track({step(0.3), step(0.3)});  // keyframe_max_translation = 0 by default
+  EXPECT_TRUE(run.results[1].keyframe);
+  EXPECT_TRUE(run.results[2].keyframe);
+  EXPECT_EQ(run.log.aligned.back(), std::make_pair(102.0, 101.0));
 }

@@ -4,6 +4,7 @@
 #include <mrpt/obs/T3DPointsProjectionParams.h>
 #include <mrpt/poses/CPose3DPDFGaussian.h>
 
+#include <opencv2/core.hpp>
 #include <ostream>
 #include <stdexcept>
 

@@ -11,7 +11,7 @@ namespace hrgbd {
 // relative to the INI file's folder; loadFromConfigFile() keeps them as written.
 struct PlaybackSection : public Params<PlaybackSection> {
   std::string input;                          // rawlog, TUM folder or "openni2"
-  std::string trajectory = "trajectory.txt";  // TUM format, optical frame; "" = none
+  std::string trajectory = "trajectory.txt";  // TUM format, optical frame (always written)
   std::string csv;                            // per-frame CSV; "" = none
   MapOutputPaths outputs;                     // keys output_rawlog, simplemap, map_ply, map_scene
 

@@ -154,9 +154,13 @@ void logRun(const BenchRun& run, std::ostream& log) {
 /** Every method on every sequence that is not skipped, on one core. */
 std::vector<BenchRun> runAll(const std::vector<BenchSequence>& sequences, const BenchmarkParams& p,
                              const std::string& config_file, std::ostream& log) {
-  // Every method on one core, as the targets are stated (OpenCV would use both otherwise).
-  const int threads = cv::getNumThreads();
-  cv::setNumThreads(1);
+  // Every method on one core, as the targets are stated (OpenCV would use both otherwise); the
+  // caller's setting is restored however this returns.
+  struct OneThread {
+    int before = cv::getNumThreads();
+    OneThread() { cv::setNumThreads(1); }
+    ~OneThread() { cv::setNumThreads(before); }
+  } one_thread;
   const auto traj_dir = fs::path(p.output_folder) / "trajectories";
   fs::create_directories(traj_dir);
   std::vector<BenchRun> runs;
@@ -170,7 +174,6 @@ std::vector<BenchRun> runAll(const std::vector<BenchSequence>& sequences, const 
       logRun(runs.back(), log);
     }
   }
-  cv::setNumThreads(threads);
   return runs;
 }
 

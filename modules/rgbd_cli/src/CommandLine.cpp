@@ -128,7 +128,9 @@ CommandLine::CommandLine(const std::string& app, const std::string& description,
       m_app(app),
       m_err(err),
       m_output(std::make_unique<Output>(out)) {
-  delete getOutput();  // TCLAP's own StdOutput, which setOutput() would leak
+  // TCLAP's own StdOutput, which setOutput() would leak: MRPT's bundled TCLAP (the one this
+  // builds against, <mrpt/3rdparty/tclap>) does not delete it there, unlike upstream 1.2.x.
+  delete getOutput();
   setOutput(m_output.get());
 }
 

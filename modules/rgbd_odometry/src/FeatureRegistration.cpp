@@ -3,6 +3,8 @@
 #include <opencv2/core.hpp>
 
 #include "MatchAndFit.h"
+#include "rgbd_core/Config.h"
+#include "rgbd_odometry/OdometryParams.h"
 #include "rgbd_odometry/PlaneIcp.h"
 
 namespace hrgbd {
@@ -39,7 +41,8 @@ FrameFeatures PhotometricRegistration::prepare(Frame& frame) {
 }
 
 RegistrationResult PhotometricRegistration::align(Frame& cur, Frame& ref) {
-  const StageTimes ms = prepare(cur).ms;  // no-op for a prepared frame
+  StageTimes ms = prepare(cur).ms;  // no-op for prepared frames
+  ms += prepare(ref).ms;
   auto r = matchAndFit(*cur.orb, *ref.orb, cv::NORM_HAMMING, m_max_hamming, m_estimate);
   r.seen.path = "photometric";
   r.seen.orb_features = orbCount(cur);
@@ -119,6 +122,31 @@ RegistrationResult HybridRegistration::align(Frame& cur, Frame& ref) {
   if (geometric.ok() || !photometric.ok())
     return withTimes(std::move(geometric), photometric.seen.ms);
   return withTimes(std::move(photometric), geometric.seen.ms);
+}
+
+std::unique_ptr<Registration> makeRegistration(const OdometryParams& p) {
+  auto photometric = [&] {
+    return std::make_unique<PhotometricRegistration>(p.orb, p.max_hamming_distance,
+                                                     msseEstimator(p.msse));
+  };
+  auto geometric = [&] {
+    MsseParams msse = p.msse;  // SHOT matches are mostly outliers: k' of their own
+    msse.k_fraction = p.geometric_k_fraction;
+    return std::make_unique<GeometricRegistration>(p.geometric, msse);
+  };
+  switch (p.method) {
+    case Method::Hybrid:
+      return std::make_unique<HybridRegistration>(
+          photometric(), geometric(),
+          HybridPolicy{p.min_orb_features, p.min_photometric_inliers, p.geometric_fallback});
+    case Method::RgbOnly:
+      return photometric();
+    case Method::DepthOnly:
+      return geometric();
+    default:
+      throw ConfigError("[Odometry] method = " + toString(p.method) +
+                        ": a baseline or peer, made by rgbd_baselines (makeAnyRegistration)");
+  }
 }
 
 }  // namespace hrgbd

@@ -1,5 +1,7 @@
 #include "rgbd_odometry/GeometricFeatures.h"
 
+#include <memory>
+
 #include "rgbd_odometry/FrameResult.h"
 #include "rgbd_odometry/Is3dSampling.h"
 #include "rgbd_odometry/PointCloud.h"
@@ -18,15 +20,17 @@ GeometricFeatures extractGeometricFeatures(const RgbdImage& image, const Geometr
   out.radius = cloud.radius;
   if (cloud.points.size() < 3) return out;
 
-  const PointKdTree tree(cloud.points);  // III-D
+  // III-D (the k-d tree, also used by SHOT, counts with the normals)
+  const auto tree =
+      timed(out.ms_normals, [&] { return std::make_unique<PointKdTree>(cloud.points); });
   Points normals = timed(out.ms_normals, [&] {
-    return estimateNormals(cloud.points, tree, p.normal_radius_factor * cloud.radius);
+    return estimateNormals(cloud.points, *tree, p.normal_radius_factor * cloud.radius);
   });
   const Is3dResult is3d = timed(out.ms_is3d, [&] { return sampleIs3d(normals, p); });  // III-E
   out.is3d_candidates = is3d.candidates;
   out.dominant_orientations = is3d.groups.size();
   ShotResult shot = timed(out.ms_shot, [&] {  // III-F
-    return computeShot(cloud.points, normals, tree, is3d.indices,
+    return computeShot(cloud.points, normals, *tree, is3d.indices,
                        p.shot_radius_factor * cloud.radius, p.shot_min_neighbours);
   });
   out.features.descriptors = shot.descriptors;

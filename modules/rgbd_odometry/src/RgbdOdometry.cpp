@@ -3,7 +3,6 @@
 #include <cmath>
 
 #include "rgbd_core/Config.h"
-#include "rgbd_odometry/FeatureRegistration.h"
 
 namespace hrgbd {
 namespace {
@@ -61,31 +60,6 @@ const char* toString(FrameResult::Status s) {
   return "?";
 }
 
-std::unique_ptr<Registration> makeRegistration(const OdometryParams& p) {
-  auto photometric = [&] {
-    return std::make_unique<PhotometricRegistration>(p.orb, p.max_hamming_distance,
-                                                     msseEstimator(p.msse));
-  };
-  auto geometric = [&] {
-    MsseParams msse = p.msse;  // SHOT matches are mostly outliers: k' of their own
-    msse.k_fraction = p.geometric_k_fraction;
-    return std::make_unique<GeometricRegistration>(p.geometric, msse);
-  };
-  switch (p.method) {
-    case Method::Hybrid:
-      return std::make_unique<HybridRegistration>(
-          photometric(), geometric(),
-          HybridPolicy{p.min_orb_features, p.min_photometric_inliers, p.geometric_fallback});
-    case Method::RgbOnly:
-      return photometric();
-    case Method::DepthOnly:
-      return geometric();
-    default:
-      throw ConfigError("[Odometry] method = " + toString(p.method) +
-                        ": a baseline or peer, made by rgbd_baselines (makeAnyRegistration)");
-  }
-}
-
 RgbdOdometry::RgbdOdometry(const OdometryParams& params)
     : RgbdOdometry(params, makeRegistration(params)) {}
 
@@ -116,15 +90,16 @@ FrameResult RgbdOdometry::track(const mrpt::obs::CObservation3DRangeScan& obs) {
     return predict(std::move(r), FrameResult::Status::BadInput, e.what());
   }
   report(m_registration->prepare(cur), r);
-  if (!m_ref) return accept(std::move(cur), m_pose, std::move(r));
+  if (!m_ref) return accept(std::move(cur), m_pose, std::move(r), true);
   // Lines 4-15: register against the reference, on the path the registration chooses.
   const auto reg = m_registration->align(cur, m_ref->frame);
   report(reg, r);
   if (!reg.ok()) return predict(std::move(r), reg.status, reg.detail);
   if (auto why = implausible(reg.T))
     return predict(std::move(r), FrameResult::Status::ImplausibleMotion, std::move(*why));
-  // Line 16: G_n = G_ref T (eq. 8); this frame becomes the reference.
-  return accept(std::move(cur), m_ref->pose + toPose(reg.T), std::move(r));
+  // Line 16: G_n = G_ref T (eq. 8); this frame becomes the reference, or, tracking against a
+  // keyframe, when the keyframe wears out.
+  return accept(std::move(cur), m_ref->pose + toPose(reg.T), std::move(r), newKeyframe(reg));
 }
 
 std::optional<std::string> RgbdOdometry::implausible(const Eigen::Isometry3d& T) const {
@@ -144,11 +119,20 @@ FrameResult RgbdOdometry::predict(FrameResult r, FrameResult::Status why, std::s
   return r;
 }
 
-FrameResult RgbdOdometry::accept(Frame frame, const mrpt::poses::CPose3D& pose, FrameResult r) {
+bool RgbdOdometry::newKeyframe(const RegistrationResult& reg) const {
+  return m_params.keyframe_max_translation <= 0 ||
+         reg.T.translation().norm() > m_params.keyframe_max_translation ||
+         rotationDeg(reg.T) > m_params.keyframe_max_rotation_deg ||
+         reg.inliers < static_cast<std::size_t>(m_params.keyframe_min_inliers);
+}
+
+FrameResult RgbdOdometry::accept(Frame frame, const mrpt::poses::CPose3D& pose, FrameResult r,
+                                 bool keyframe) {
   r.status = m_ref ? FrameResult::Status::Ok : FrameResult::Status::FirstFrame;
+  r.keyframe = keyframe;
   if (m_ref) m_velocity = pose - m_pose;
   m_pose = pose;
-  m_ref = Reference{std::move(frame), pose};
+  if (keyframe) m_ref = Reference{std::move(frame), pose};
   r.pose = m_pose;
   return r;
 }

@@ -6,7 +6,7 @@
 
 #include <iosfwd>
 
-#include "rgbd_odometry/RgbdOdometry.h"
+#include "rgbd_odometry/FrameResult.h"
 
 namespace hrgbd {
 

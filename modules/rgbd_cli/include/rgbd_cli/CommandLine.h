@@ -16,6 +16,8 @@
 #include <string>
 #include <vector>
 
+#include "rgbd_core/Config.h"
+
 namespace hrgbd {
 
 /** Exit codes of every app. */
@@ -31,15 +33,6 @@ enum ExitCode : int {
 struct UsageError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
-
-/** Every name of an enum declared with MRPT_ENUM_TYPE_BEGIN / MRPT_FILL_ENUM_CUSTOM_NAME, in
- * declaration order: the same list the INI loader accepts (enumNames() in rgbd_core/Config.h). */
-template <class E>
-std::vector<std::string> enumValues() {
-  std::vector<std::string> names;
-  for (const auto& kv : mrpt::typemeta::TEnumType<E>::getBimap().m_k2v) names.push_back(kv.second);
-  return names;
-}
 
 /** A TCLAP command line for one app. Declare the arguments after it (they register with it and
  * must not outlive it), then `return cmd.run(argc, argv, [&] { ...work... });` from main. */
@@ -69,10 +62,10 @@ class CommandLine : public TCLAP::CmdLine {
   TCLAP::Constraint<double>* finite(const std::string& type);               //!< any real
   /** The value must be one of `allowed`, which the usage text lists as `a|b|c`. */
   TCLAP::Constraint<std::string>* oneOf(const std::vector<std::string>& allowed);
-  /** The value must name an E (enumValues<E>()), as in the INI files. */
+  /** The value must name an E (enumNameList<E>()), as in the INI files. */
   template <class E>
   TCLAP::Constraint<std::string>* oneOf() {
-    return oneOf(enumValues<E>());
+    return oneOf(enumNameList<E>());
   }
 
  private:

@@ -30,12 +30,19 @@ void requireValid(bool ok, const std::string& section, const std::string& key, d
 std::string resolvePath(const std::string& base, const std::string& path);
 
 /** Every name of an enum declared with MRPT_ENUM_TYPE_BEGIN / MRPT_FILL_ENUM_CUSTOM_NAME, in
- * declaration order, joined by `sep`: the allowed values for INI files and command lines. */
+ * declaration order: the allowed values for INI files and command lines. */
+template <class E>
+std::vector<std::string> enumNameList() {
+  std::vector<std::string> out;
+  for (const auto& kv : mrpt::typemeta::TEnumType<E>::getBimap().m_k2v) out.push_back(kv.second);
+  return out;
+}
+
+/** enumNameList() joined by `sep`. */
 template <class E>
 std::string enumNames(const std::string& sep = "|") {
   std::string out;
-  for (const auto& kv : mrpt::typemeta::TEnumType<E>::getBimap().m_k2v)
-    out += (out.empty() ? "" : sep) + kv.second;
+  for (const auto& name : enumNameList<E>()) out += (out.empty() ? "" : sep) + name;
   return out;
 }
 
@@ -47,14 +54,6 @@ E parseEnum(const std::string& name, const std::string& section, const std::stri
   if (!mrpt::typemeta::TEnumType<E>::getBimap().inverse(name, v))
     throw ConfigError("[" + section + "] " + key + " = '" + name + "': must be " + enumNames<E>());
   return v;
-}
-
-/** Reads `key` of `section` into `v` when the key is present (the first word of its value). */
-template <class E>
-void loadEnum(const mrpt::config::CConfigFileBase& c, const std::string& section,
-              const std::string& key, E& v) {
-  if (c.keyExists(section, key))
-    v = parseEnum<E>(c.read_string_first_word(section, key, ""), section, key);
 }
 
 /** Loads an INI file, throwing ConfigError if it is missing or unreadable. */

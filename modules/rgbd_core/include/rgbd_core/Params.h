@@ -66,14 +66,6 @@ struct NonEmpty {
   std::string why(const std::vector<std::string>& v) const;
 };
 
-/** The names of an MRPT_ENUM_TYPE enum, in declaration order (for OneOf on text lists). */
-template <class E>
-std::vector<std::string> enumNameList() {
-  std::vector<std::string> out;
-  for (const auto& kv : mrpt::typemeta::TEnumType<E>::getBimap().m_k2v) out.push_back(kv.second);
-  return out;
-}
-
 namespace params_detail {
 
 /** The value of `key` as MRPT reads it; ConfigError for the spellings MRPT misreads as a comment

@@ -4,6 +4,7 @@
  * rawlog-edit open. */
 #include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/obs/CObservation.h>
+#include <mrpt/typemeta/TEnumType.h>
 
 #include <memory>
 #include <string>
@@ -21,6 +22,17 @@ enum class ImageStorage {
   ExternalPng,   //!< lossless PNG files in "<stem>_Images/", as MRPT's grabbers do
   ExternalJpeg,  //!< JPEG (quality 90) in "<stem>_Images/", for small bundled sequences
 };
+
+}  // namespace hrgbd
+
+// The names of ImageStorage in INI files and on the command line (`--images`).
+MRPT_ENUM_TYPE_BEGIN(hrgbd::ImageStorage)
+MRPT_FILL_ENUM_CUSTOM_NAME(hrgbd::ImageStorage::Inline, "inline");
+MRPT_FILL_ENUM_CUSTOM_NAME(hrgbd::ImageStorage::ExternalPng, "png");
+MRPT_FILL_ENUM_CUSTOM_NAME(hrgbd::ImageStorage::ExternalJpeg, "jpg");
+MRPT_ENUM_TYPE_END()
+
+namespace hrgbd {
 
 class RawlogWriter {
  public:

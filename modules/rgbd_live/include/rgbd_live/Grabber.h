@@ -25,7 +25,8 @@ class Grabber : public FrameSource {
   /** The next queued frame (waits for one), nullptr at the end of the data. Rethrows the
    * source's error. */
   mrpt::obs::CObservation3DRangeScan::Ptr next() override;
-  /** The wrapped source's description. */
+  /** The wrapped source's description. Its ground truth and statistics are not forwarded: the
+   * wrapped source is read on the grabber's thread. */
   std::string describe() const override { return m_description; }
   /** [count] frames dropped because the consumer was behind a live source. */
   std::size_t dropped() const;

@@ -4,9 +4,10 @@
 #include <mrpt/poses/CPose3D.h>
 
 #include <Eigen/Core>
-#include <chrono>
 #include <string>
 #include <vector>
+
+#include "rgbd_core/Timing.h"
 
 namespace hrgbd {
 
@@ -15,21 +16,6 @@ struct StageTimes {
   double prepare = 0, features = 0, matching = 0, estimation = 0, refine = 0, total = 0;
   StageTimes& operator+=(const StageTimes& o);
 };
-
-/** Runs `f()` and adds its duration [ms] to `acc`; returns what `f` returns. */
-template <class F>
-auto timed(double& acc, F&& f) {
-  const auto t0 = std::chrono::steady_clock::now();
-  struct Add {  // adds on every exit, also when f() throws
-    double& acc;
-    std::chrono::steady_clock::time_point t0;
-    ~Add() {
-      acc +=
-          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-    }
-  } add{acc, t0};
-  return f();
-}
 
 /** Outcome of one frame. Poses are of the colour camera's optical frame in the first frame's
  * optical frame (TUM convention). */
@@ -55,7 +41,8 @@ struct FrameResult {
   double scale = 0;                                    //!< [m] estimator noise scale
   /** [m] the current frame's inlier features (optical frame), for display; empty on failure */
   std::vector<Eigen::Vector3f> inlier_points;
-  StageTimes ms;  //!< [ms] per stage
+  bool keyframe = false;  //!< registered and became the reference for the next frames
+  StageTimes ms;          //!< [ms] per stage
   bool registered() const { return status == Status::Ok || status == Status::FirstFrame; }
 };
 const char* toString(FrameResult::Status s);

@@ -76,9 +76,15 @@ struct OdometryParams : public Params<OdometryParams> {
   FailurePolicy on_failure = FailurePolicy::ConstantVelocity;  //!< pose of unregistered frames
   double max_step_translation = 0.5;  //!< [m] larger frame-to-frame motion is flagged as failure
   double max_step_rotation_deg = 30;  //!< [deg] larger frame-to-frame rotation is flagged too
-  OrbParams orb;                      //!< section [ORB]
-  GeometricParams geometric;          //!< section [Geometric]
-  MsseParams msse;                    //!< section [MSSE]
+  /** [m] Frame-to-keyframe tracking: frames are registered against the keyframe, which the
+   * current frame replaces once it is this far from it. 0 = every registered frame becomes the
+   * reference: the paper's frame-to-frame chaining (Algorithm 2). */
+  double keyframe_max_translation = 0;
+  double keyframe_max_rotation_deg = 5;  //!< [deg] ... or once it has turned this much
+  int keyframe_min_inliers = 0;          //!< [count] ... or was registered on fewer inliers
+  OrbParams orb;                         //!< section [ORB]
+  GeometricParams geometric;             //!< section [Geometric]
+  MsseParams msse;                       //!< section [MSSE]
 
   template <class P, class V>
   static void declare(P& p, V& v) {
@@ -94,6 +100,13 @@ struct OdometryParams : public Params<OdometryParams> {
     HRGBD_PARAM(max_step_translation, "[m] larger motion per frame: failure", Range::above(0));
     HRGBD_PARAM(max_step_rotation_deg, "[deg] larger rotation per frame: failure",
                 Range::openClosed(0, 180));
+    HRGBD_PARAM(keyframe_max_translation,
+                "[m] new keyframe beyond this distance from it (0 = frame to frame)",
+                Range::atLeast(0));
+    HRGBD_PARAM(keyframe_max_rotation_deg, "[deg] new keyframe beyond this rotation from it",
+                Range::openClosed(0, 180));
+    HRGBD_PARAM(keyframe_min_inliers, "[count] new keyframe below this many inliers",
+                Range::atLeast(0));
     v.section(p.orb, "ORB");
     v.section(p.geometric, "Geometric");
     v.section(p.msse, "MSSE");

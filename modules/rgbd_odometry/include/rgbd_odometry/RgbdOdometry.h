@@ -1,7 +1,8 @@
 #pragma once
 /** \file RgbdOdometry.h
  * The tracker (paper Algorithm 2): each frame is prepared, registered against the reference
- * (the last registered frame) by a Registration, checked for plausibility, and accepted, which
+ * (the last registered frame, or the keyframe with keyframe_max_translation > 0) by a
+ * Registration, checked for plausibility, and accepted, which
  * chains the motion, G_n = G_ref T (eq. 8), or flagged, which predicts the pose. */
 #include <mrpt/obs/CObservation3DRangeScan.h>
 #include <mrpt/poses/CPose3D.h>
@@ -38,11 +39,12 @@ class RgbdOdometry {
   FrameResult track(const mrpt::obs::CObservation3DRangeScan& obs);
   std::optional<std::string> implausible(const Eigen::Isometry3d& T) const;
   FrameResult predict(FrameResult r, FrameResult::Status why, std::string detail);
-  FrameResult accept(Frame frame, const mrpt::poses::CPose3D& pose, FrameResult r);
+  bool newKeyframe(const RegistrationResult& reg) const;
+  FrameResult accept(Frame frame, const mrpt::poses::CPose3D& pose, FrameResult r, bool keyframe);
 
   OdometryParams m_params;
   std::unique_ptr<Registration> m_registration;
-  std::optional<Reference> m_ref;   // last registered frame
+  std::optional<Reference> m_ref;   // last registered frame, or the keyframe
   mrpt::poses::CPose3D m_pose;      // pose of the latest frame
   mrpt::poses::CPose3D m_velocity;  // last registered per-frame motion
 };
