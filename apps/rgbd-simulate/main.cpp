@@ -70,7 +70,7 @@ int main(int argc, char** argv) {
     for (auto* a : {&frames, &seed}) put(ini, *a, !config.isSet());
     if (far.isSet()) ini.write("Simulator", "far", "true");
     hrgbd::sim::SimParams p;
-    hrgbd::loadStrict(p, ini, "Simulator");
+    p.loadFromConfigFile(ini, "Simulator");
     if (print.isSet()) {
       std::cout << iniText(p);
       return;

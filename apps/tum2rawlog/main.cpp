@@ -19,7 +19,7 @@ int main(int argc, char** argv) {
   return cmd.run(argc, argv, [&] {
     hrgbd::TumSourceParams params;
     if (!cfg.getValue().empty())
-      hrgbd::loadStrict(params, *hrgbd::loadIniFile(cfg.getValue()), "TumSource");
+      params.loadFromConfigFile(*hrgbd::loadIniFile(cfg.getValue()), "TumSource");
     hrgbd::TumSource src(in.getValue(), params);
     std::cout << src.describe() << "\n";
     hrgbd::RawlogWriter writer(out.getValue(), hrgbd::parseEnum<hrgbd::ImageStorage>(

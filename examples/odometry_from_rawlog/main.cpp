@@ -22,9 +22,7 @@ int main(int argc, char** argv) {
       r.pose.getAsQuaternion(q);
       std::printf("%.9f %.6f %.6f %.6f %.6f %.6f %.6f %.6f\n", r.t, r.pose.x(), r.pose.y(),
                   r.pose.z(), q.x(), q.y(), q.z(), q.r());
-      using Status = hrgbd::FrameResult::Status;
-      if (r.status != Status::Ok && r.status != Status::FirstFrame)
-        std::fprintf(stderr, "%.9f: %s\n", r.t, hrgbd::toString(r.status));
+      if (!r.registered()) std::fprintf(stderr, "%.9f: %s\n", r.t, hrgbd::toString(r.status));
     }
     return 0;
   } catch (const std::exception& e) {

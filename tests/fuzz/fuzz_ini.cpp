@@ -18,7 +18,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
   try {
     const auto cfg = hrgbd::loadChecked(path);
     hrgbd::BenchmarkParams bench;
-    hrgbd::loadStrict(bench, *cfg, "Benchmark");
+    bench.loadFromConfigFile(*cfg, "Benchmark");
   } catch (const hrgbd::ConfigError&) {
   }
   return 0;

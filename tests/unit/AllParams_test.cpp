@@ -238,7 +238,7 @@ TEST(AllParams, OneFileHoldsEverySectionAndThePlaybackAcceptsIt) {
   EXPECT_NE(hrgbd::effectiveConfig(ini).find("[Odometry]"), std::string::npos);
   const auto cfg = hrgbd::loadIniFile(ini);
   hrgbd::sim::SimParams simp;
-  EXPECT_NO_THROW(hrgbd::loadStrict(simp, *cfg, "Simulator"));
+  EXPECT_NO_THROW(simp.loadFromConfigFile(*cfg, "Simulator"));
   hrgbd::PlaybackOptions o;
   o.config = ini;
   o.input = std::string(HRGBD_SOURCE_DIR) + "/rawlogs/desk_near.rawlog";

@@ -108,14 +108,14 @@ TEST(Simulator, SensorModelKeysAreReadAndChecked) {
   ini.write("Simulator", "correlation_window", 5);
   ini.write("Simulator", "rolling_shutter_ms", 12.5);
   SimParams p;
-  hrgbd::loadStrict(p, ini, "Simulator");
+  p.loadFromConfigFile(ini, "Simulator");
   EXPECT_EQ(p.sensor.correlation_window, 5);
   EXPECT_DOUBLE_EQ(p.sensor.rolling_shutter_ms, 12.5);
   ini.write("Simulator", "correlation_window", 0);
-  EXPECT_THROW(hrgbd::loadStrict(p, ini, "Simulator"), hrgbd::ConfigError);
+  EXPECT_THROW(p.loadFromConfigFile(ini, "Simulator"), hrgbd::ConfigError);
   ini.write("Simulator", "correlation_window", 9);
   ini.write("Simulator", "disparity_distorsion", 0.3);  // misspelt key
-  EXPECT_THROW(hrgbd::loadStrict(p, ini, "Simulator"), hrgbd::ConfigError);
+  EXPECT_THROW(p.loadFromConfigFile(ini, "Simulator"), hrgbd::ConfigError);
 }
 
 TEST(Simulator, EllipsoidDepthIsExact) {

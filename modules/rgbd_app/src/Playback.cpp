@@ -34,7 +34,7 @@ PlaybackJob resolveJob(const PlaybackOptions& opt) {
   pb.load(*job.cfg,
           opt.config.empty() ? "." : std::filesystem::path(opt.config).parent_path().string());
   if (!opt.ini_outputs) pb.csv.clear(), pb.outputs = {};
-  loadStrict(job.odometry, *job.cfg, "Odometry");
+  job.odometry.loadFromConfigFile(*job.cfg, "Odometry");
   if (!opt.method.empty()) job.odometry.method = parseMethod(opt.method);
   auto pick = [](const std::string& cli, const std::string& ini) {
     return cli.empty() ? ini : cli;
@@ -112,7 +112,7 @@ PlaybackSinks makeSinks(const PlaybackJob& job, const FrameSource& source, bool 
                           ": timestamp tx ty tz qx qy qz qw (optical frame of the first camera)");
   if (!job.csv.empty()) s.csv = std::make_unique<CsvSink>(job.csv);
   MapParams map_params;
-  loadStrict(map_params, *job.cfg, "Map");
+  map_params.loadFromConfigFile(*job.cfg, "Map");
   const auto& o = job.outputs;
   if (!o.output_rawlog.empty()) s.rawlog = std::make_unique<PosedRawlogSink>(o.output_rawlog);
   if (!o.simplemap.empty()) s.simplemap = std::make_unique<SimplemapSink>(o.simplemap);

@@ -12,6 +12,7 @@
 #include <sstream>
 #include <thread>
 
+#include "rgbd_app/AppConfig.h"
 #include "rgbd_core/Config.h"
 #include "rgbd_sim/Scene.h"
 #include "rgbd_sim/Simulator.h"
@@ -100,10 +101,9 @@ namespace {
 
 /** [Benchmark] from `config_file`, its paths resolved against the file's folder. */
 BenchmarkParams loadBenchmarkParams(const std::string& config_file) {
-  const auto cfg = loadIniFile(config_file);
-  rejectUnknownSections(*cfg);
+  const auto cfg = loadChecked(config_file);
   BenchmarkParams p;
-  loadStrict(p, *cfg, "Benchmark");
+  p.loadFromConfigFile(*cfg, "Benchmark");
   const auto base = fs::path(config_file).parent_path().string();
   p.cache_folder = resolvePath(base, p.cache_folder);
   p.output_folder = resolvePath(base, p.output_folder);

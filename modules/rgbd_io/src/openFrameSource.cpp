@@ -14,7 +14,7 @@ std::unique_ptr<FrameSource> openFrameSource(const std::string& input,
   if (input == "openni2") return std::make_unique<OpenNI2Source>(cfg, "OpenNI2");
   if (mrpt::system::directoryExists(input)) {
     TumSourceParams p;
-    loadStrict(p, cfg, "TumSource");
+    p.loadFromConfigFile(cfg, "TumSource");
     return std::make_unique<TumSource>(input, p);
   }
   return std::make_unique<RawlogSource>(input);

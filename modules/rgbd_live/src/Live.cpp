@@ -76,9 +76,9 @@ void runControls(FrameLoop& loop, LiveSinks& sinks, LiveViewer& viewer, const Gr
 void runLive(const LiveOptions& opt, std::ostream& log) {
   const auto cfg = loadChecked(opt.config);
   OdometryParams params;
-  loadStrict(params, *cfg, "Odometry");
+  params.loadFromConfigFile(*cfg, "Odometry");
   MapParams map_params;
-  loadStrict(map_params, *cfg, "Map");
+  map_params.loadFromConfigFile(*cfg, "Map");
   auto odometry = makeOdometry(params, *cfg);
   auto source = openFrameSource(opt.input, *cfg);  // throws "no OpenNI2 sensor ..." clearly
   log << "input: " << source->describe() << "\nmethod: " << toString(params.method) << std::endl;

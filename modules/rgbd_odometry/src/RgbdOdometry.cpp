@@ -19,12 +19,12 @@ void report(const FrameFeatures& seen, FrameResult& r) {
   r.ms += seen.ms;
 }
 
-void report(const RegistrationResult& reg, FrameResult& r) {
+void report(RegistrationResult& reg, FrameResult& r) {
   report(reg.seen, r);
   r.matches = reg.matches;
   r.inliers = reg.inliers;
   r.scale = reg.scale;
-  r.inlier_points = reg.inlier_points;
+  r.inlier_points = std::move(reg.inlier_points);  // the registration's result is not kept
 }
 
 }  // namespace
@@ -92,7 +92,7 @@ FrameResult RgbdOdometry::track(const mrpt::obs::CObservation3DRangeScan& obs) {
   report(m_registration->prepare(cur), r);
   if (!m_ref) return accept(std::move(cur), m_pose, std::move(r), true);
   // Lines 4-15: register against the reference, on the path the registration chooses.
-  const auto reg = m_registration->align(cur, m_ref->frame);
+  auto reg = m_registration->align(cur, m_ref->frame);
   report(reg, r);
   if (!reg.ok()) return predict(std::move(r), reg.status, reg.detail);
   if (auto why = implausible(reg.T))

@@ -146,7 +146,7 @@ struct Loader {
   }
   template <class P>
   void section(P& sub, const std::string& name) {
-    sub.loadFromConfigFile(c, name);
+    sub.loadKeys(c, name);  // the parent's validate() checks it, once
   }
   template <class P>
   void merge(P& sub) {
@@ -226,10 +226,16 @@ struct Params : public mrpt::config::CLoadableOptions {
    * their value), loads the sub-sections and validates. Throws ConfigError naming section and
    * key. */
   void loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) override {
+    loadKeys(c, s);
+    validate(s);
+  }
+
+  /** Rejects unknown keys and reads the declared keys present (strictly typed), sub-sections
+   * included, without the range checks (validate() does those). */
+  void loadKeys(const mrpt::config::CConfigFileBase& c, const std::string& s) {
     rejectUnknownKeys(c, s, keyNames());
     params_detail::Loader loader{c, s};
     Self::declare(self(), loader);
-    validate(s);
   }
 
   /** Writes every declared key of `s`, then the sub-sections. */
@@ -261,12 +267,5 @@ struct Params : public mrpt::config::CLoadableOptions {
   Self& self() { return static_cast<Self&>(*this); }
   const Self& self() const { return static_cast<const Self&>(*this); }
 };
-
-/** Loads `p` from `section` of `cfg` with every check (the same as p.loadFromConfigFile()). */
-template <class P>
-void loadStrict(Params<P>& p, const mrpt::config::CConfigFileBase& cfg,
-                const std::string& section) {
-  p.loadFromConfigFile(cfg, section);
-}
 
 }  // namespace hrgbd
