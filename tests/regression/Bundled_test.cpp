@@ -38,10 +38,12 @@ TEST(Bundled, DefaultJobTracksTheSimulatedDesk) {
 }
 
 namespace {
+// The paper's pipeline (config/paper.ini): the dense refinement of the default configuration
+// registers the zig-zag from colour alone too.
 hrgbd::PlaybackSummary runOnStructure(const std::string& method) {
   const auto dir = hrgbd::test::tempDir("bundled_structure_" + method);
   hrgbd::PlaybackOptions o;
-  o.config = std::string(HRGBD_SOURCE_DIR) + "/config.ini";
+  o.config = std::string(HRGBD_SOURCE_DIR) + "/config/paper.ini";
   o.input = std::string(HRGBD_SOURCE_DIR) + "/rawlogs/structure_near.rawlog";
   o.method = method;
   o.ini_outputs = false;

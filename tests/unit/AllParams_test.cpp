@@ -84,6 +84,7 @@ std::vector<SectionCase> allSections() {
           caseOf<OdometryParams>("Odometry", "ORB", odo.orb),
           caseOf<OdometryParams>("Odometry", "Geometric", odo.geometric),
           caseOf<OdometryParams>("Odometry", "MSSE", odo.msse),
+          caseOf<OdometryParams>("Odometry", "Dense", odo.dense),
           caseOf<BaselineParams>(bs, "RANSAC", baselines.ransac),
           caseOf<BaselineParams>(bs, "ICP", baselines.icp),
           caseOf<MapParams>("Map", "Map", MapParams()),

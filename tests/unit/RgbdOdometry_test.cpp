@@ -9,6 +9,14 @@
 using hrgbd::FrameResult;
 
 namespace {
+// The paper's pipeline: frame to frame, sparse only (the paths' policies are tested on it).
+hrgbd::OdometryParams paperParams() {
+  hrgbd::OdometryParams p;
+  p.keyframe_max_translation = 0;
+  p.dense.enabled = false;
+  return p;
+}
+
 std::vector<mrpt::obs::CObservation3DRangeScan::Ptr> bundledFrames(
     const std::string& name = "desk_near") {
   hrgbd::RawlogSource src(std::string(HRGBD_SOURCE_DIR) + "/rawlogs/" + name + ".rawlog");
@@ -63,7 +71,7 @@ TEST(RgbdOdometry, HoldPolicyKeepsThePoseOfTheLastFrame) {
 
 TEST(RgbdOdometry, DepthOnlyAlwaysTakesTheGeometricPath) {
   const auto frames = bundledFrames();
-  hrgbd::OdometryParams p;
+  hrgbd::OdometryParams p = paperParams();
   p.method = hrgbd::Method::DepthOnly;
   hrgbd::RgbdOdometry odo(p);
   const auto first = odo.processObservation(*frames[0]);
@@ -76,7 +84,7 @@ TEST(RgbdOdometry, DepthOnlyAlwaysTakesTheGeometricPath) {
 }
 
 TEST(RgbdOdometry, HybridSwitchesPathsOnTheOrbFeatureCount) {
-  hrgbd::OdometryParams p;  // min_orb_features = 50
+  hrgbd::OdometryParams p = paperParams();  // min_orb_features = 50
   for (const auto& [sequence, path] :
        {std::pair{"desk_near", "photometric"}, std::pair{"structure_near", "geometric"}}) {
     const auto frames = bundledFrames(sequence);
@@ -92,7 +100,7 @@ TEST(RgbdOdometry, HybridSwitchesPathsOnTheOrbFeatureCount) {
 
 TEST(RgbdOdometry, GeometricFallbackRescuesPhotometricFailures) {
   const auto frames = bundledFrames("structure_near");
-  hrgbd::OdometryParams p;
+  hrgbd::OdometryParams p = paperParams();
   p.min_orb_features = 0;  // never switch on the count: the plain panels' few ORB matches fail
   for (const bool fallback : {false, true}) {
     p.geometric_fallback = fallback;
@@ -109,7 +117,7 @@ TEST(RgbdOdometry, FewPhotometricInliersHandOverToTheGeometricPath) {
   // makes every frame try the geometric path, which registers the desk too and takes over.
   const auto frames = bundledFrames("desk_near");
   for (const int threshold : {0, 100000}) {
-    hrgbd::OdometryParams p;
+    hrgbd::OdometryParams p = paperParams();
     p.min_photometric_inliers = threshold;
     hrgbd::RgbdOdometry odo(p);
     odo.processObservation(*frames[0]);
@@ -173,14 +181,14 @@ TEST(RgbdOdometry, SuddenJumpRegistersWithinLimitsAndIsFlaggedBeyondThem) {
   const auto truth = (-gt[0].pose) + gt[15].pose;
   ASSERT_GT(truth.translation().norm(), 0.1);
   {
-    hrgbd::RgbdOdometry odo{hrgbd::OdometryParams()};
+    hrgbd::RgbdOdometry odo(paperParams());
     for (int i : {0, 1, 2}) odo.processObservation(*frames[i]);
     const auto jump = odo.processObservation(*frames[15]);
     ASSERT_EQ(jump.status, FrameResult::Status::Ok) << jump.detail;
     EXPECT_LT((jump.pose.translation() - truth.translation()).norm(), 0.02);
     EXPECT_EQ(odo.processObservation(*frames[16]).status, FrameResult::Status::Ok);
   }
-  hrgbd::OdometryParams p;
+  hrgbd::OdometryParams p = paperParams();
   p.max_step_translation = 0.05;
   hrgbd::RgbdOdometry odo(p);
   mrpt::poses::CPose3D g1, g2;

@@ -47,9 +47,9 @@ std::unique_ptr<mrpt::config::CConfigFileBase> loadIniFile(const std::string& pa
 }
 
 const std::vector<std::string>& knownConfigSections() {
-  static const std::vector<std::string> s{"Playback",  "Odometry", "ORB",       "Geometric",
-                                          "MSSE",      "RANSAC",   "ICP",       "Map",
-                                          "TumSource", "OpenNI2",  "Simulator", "Benchmark"};
+  static const std::vector<std::string> s{
+      "Playback", "Odometry", "ORB",       "Geometric", "MSSE",      "Dense",    "RANSAC",
+      "ICP",      "Map",      "TumSource", "OpenNI2",   "Simulator", "Benchmark"};
   return s;
 }
 

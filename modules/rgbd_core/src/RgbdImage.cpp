@@ -1,6 +1,9 @@
 #include "rgbd_core/RgbdImage.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <opencv2/calib3d.hpp>
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
 
@@ -50,6 +53,35 @@ void requireSize(const cv::Mat& img, const mrpt::img::TCamera& c, const char* wh
                                 std::to_string(c.ncols) + "x" + std::to_string(c.nrows));
 }
 
+// Removes the lens distortion of the colour camera (fr1 and fr2 have some) from the grey image
+// and the depth registered to it, so that every later stage may assume a pinhole camera. The
+// maps are made once per calibration (OpenCV's undistortion maps; depth by nearest neighbour so
+// that unknown depth never blends into known depth).
+void undistort(RgbdImage& f, const mrpt::img::TCamera& c) {
+  if (std::all_of(c.dist.begin(), c.dist.end(), [](double d) { return d == 0; })) return;
+  const std::array<double, 11> key{f.cam.fx,
+                                   f.cam.fy,
+                                   f.cam.cx,
+                                   f.cam.cy,
+                                   double(f.grey.cols),
+                                   double(f.grey.rows),
+                                   c.dist[0],
+                                   c.dist[1],
+                                   c.dist[2],
+                                   c.dist[3],
+                                   c.dist[4]};
+  thread_local std::array<double, 11> made{};
+  thread_local cv::Mat mx, my;
+  if (key != made) {
+    const cv::Mat K = (cv::Mat_<double>(3, 3) << key[0], 0, key[2], 0, key[1], key[3], 0, 0, 1);
+    const cv::Mat D = (cv::Mat_<double>(1, 5) << key[6], key[7], key[8], key[9], key[10]);
+    cv::initUndistortRectifyMap(K, D, cv::noArray(), K, f.grey.size(), CV_32FC1, mx, my);
+    made = key;
+  }
+  cv::remap(f.grey, f.grey, mx, my, cv::INTER_LINEAR, cv::BORDER_REPLICATE);
+  cv::remap(f.depth, f.depth, mx, my, cv::INTER_NEAREST, cv::BORDER_CONSTANT, 0);
+}
+
 }  // namespace
 
 RgbdImage prepareRgbdImage(const mrpt::obs::CObservation3DRangeScan& obs) {
@@ -72,6 +104,7 @@ RgbdImage prepareRgbdImage(const mrpt::obs::CObservation3DRangeScan& obs) {
     f.depth = registerDepth(depth, toPinhole(obs.cameraParams, "depth camera"), f.cam,
                             obs.relativePoseIntensityWRTDepth, f.grey.size());
   }
+  undistort(f, obs.cameraParamsIntensity);
   return f;
 }
 

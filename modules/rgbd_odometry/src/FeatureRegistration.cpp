@@ -124,7 +124,9 @@ RegistrationResult HybridRegistration::align(Frame& cur, Frame& ref) {
   return withTimes(std::move(photometric), geometric.seen.ms);
 }
 
-std::unique_ptr<Registration> makeRegistration(const OdometryParams& p) {
+namespace {
+
+std::unique_ptr<Registration> makeSparseRegistration(const OdometryParams& p) {
   auto photometric = [&] {
     return std::make_unique<PhotometricRegistration>(p.orb, p.max_hamming_distance,
                                                      msseEstimator(p.msse));
@@ -147,6 +149,14 @@ std::unique_ptr<Registration> makeRegistration(const OdometryParams& p) {
       throw ConfigError("[Odometry] method = " + toString(p.method) +
                         ": a baseline or peer, made by rgbd_baselines (makeAnyRegistration)");
   }
+}
+
+}  // namespace
+
+std::unique_ptr<Registration> makeRegistration(const OdometryParams& p) {
+  auto sparse = makeSparseRegistration(p);
+  if (!p.dense.enabled) return sparse;
+  return std::make_unique<DenseRefined>(std::move(sparse), p.dense);
 }
 
 }  // namespace hrgbd

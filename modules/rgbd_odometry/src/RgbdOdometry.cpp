@@ -64,11 +64,15 @@ RgbdOdometry::RgbdOdometry(const OdometryParams& params)
     : RgbdOdometry(params, makeRegistration(params)) {}
 
 RgbdOdometry::RgbdOdometry(const OdometryParams& params, std::unique_ptr<Registration> registration)
-    : m_params(params), m_registration(std::move(registration)) {}
+    : m_params(params), m_registration(std::move(registration)) {
+  // the baselines and peers track frame to frame, as published
+  if (!isProductMethod(params.method)) m_params.keyframe_max_translation = 0;
+}
 
 void RgbdOdometry::reset() {
   m_ref.reset();
   m_pose = m_velocity = mrpt::poses::CPose3D();
+  m_previous_registered = false;
 }
 
 FrameResult RgbdOdometry::processObservation(const mrpt::obs::CObservation3DRangeScan& obs) {
@@ -92,14 +96,16 @@ FrameResult RgbdOdometry::track(const mrpt::obs::CObservation3DRangeScan& obs) {
   report(m_registration->prepare(cur), r);
   if (!m_ref) return accept(std::move(cur), m_pose, std::move(r), true);
   // Lines 4-15: register against the reference, on the path the registration chooses.
+  cur.guess = toIsometry((m_pose + m_velocity) - m_ref->pose);
   auto reg = m_registration->align(cur, m_ref->frame);
   report(reg, r);
   if (!reg.ok()) return predict(std::move(r), reg.status, reg.detail);
-  if (auto why = implausible(reg.T))
+  // Line 16: G_n = G_ref T (eq. 8), unless the step from the last pose is implausible; this frame
+  // becomes the reference, or, tracking against a keyframe, when the keyframe wears out.
+  const mrpt::poses::CPose3D pose = m_ref->pose + toPose(reg.T);
+  if (auto why = implausible(toIsometry(pose - m_pose)))
     return predict(std::move(r), FrameResult::Status::ImplausibleMotion, std::move(*why));
-  // Line 16: G_n = G_ref T (eq. 8); this frame becomes the reference, or, tracking against a
-  // keyframe, when the keyframe wears out.
-  return accept(std::move(cur), m_ref->pose + toPose(reg.T), std::move(r), newKeyframe(reg));
+  return accept(std::move(cur), pose, std::move(r), newKeyframe(reg));
 }
 
 std::optional<std::string> RgbdOdometry::implausible(const Eigen::Isometry3d& T) const {
@@ -114,6 +120,7 @@ FrameResult RgbdOdometry::predict(FrameResult r, FrameResult::Status why, std::s
   r.status = why;
   r.detail = std::move(detail);
   r.inlier_points.clear();
+  m_previous_registered = false;
   if (m_params.on_failure == FailurePolicy::ConstantVelocity) m_pose = m_pose + m_velocity;
   r.pose = m_pose;
   return r;
@@ -130,7 +137,10 @@ FrameResult RgbdOdometry::accept(Frame frame, const mrpt::poses::CPose3D& pose, 
                                  bool keyframe) {
   r.status = m_ref ? FrameResult::Status::Ok : FrameResult::Status::FirstFrame;
   r.keyframe = keyframe;
-  if (m_ref) m_velocity = pose - m_pose;
+  // the motion of one frame: only between two registered frames (after a predicted pose, the
+  // difference would carry the prediction's error into every later prediction)
+  if (m_ref && m_previous_registered) m_velocity = pose - m_pose;
+  m_previous_registered = true;
   m_pose = pose;
   if (keyframe) m_ref = Reference{std::move(frame), pose};
   r.pose = m_pose;

@@ -79,8 +79,25 @@ std::vector<double> residuals(const Correspondences& c, const Eigen::Isometry3d&
   return r;
 }
 
+namespace {
+
+// The rotation made orthonormal again: chained products drift from it by rounding, and a drift
+// fed back through the motion prediction grows without bound.
+Eigen::Isometry3d orthonormal(const Eigen::Matrix4d& m) {
+  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+  T.linear() = Eigen::Quaterniond(m.topLeftCorner<3, 3>()).normalized().toRotationMatrix();
+  T.translation() = m.topRightCorner<3, 1>();
+  return T;
+}
+
+}  // namespace
+
 mrpt::poses::CPose3D toPose(const Eigen::Isometry3d& T) {
-  return mrpt::poses::CPose3D(mrpt::math::CMatrixDouble44(T.matrix()));
+  return mrpt::poses::CPose3D(mrpt::math::CMatrixDouble44(orthonormal(T.matrix()).matrix()));
+}
+
+Eigen::Isometry3d toIsometry(const mrpt::poses::CPose3D& pose) {
+  return orthonormal(pose.getHomogeneousMatrixVal<mrpt::math::CMatrixDouble44>().asEigen());
 }
 
 const char* toString(RigidEstimate::Status s) {

@@ -20,7 +20,8 @@ struct RgbdImage {
 /** Prepares an observation. If depth and colour cameras do not coincide, the depth is
  * re-projected into the colour camera using `relativePoseIntensityWRTDepth` (nearest depth wins).
  * Throws std::invalid_argument naming what is wrong: no colour image, no depth, ranges instead of
- * depths, non-positive or non-finite intrinsics. Non-finite depth values become 0 (unknown). */
+ * depths, non-positive or non-finite intrinsics. Non-finite depth values become 0 (unknown).
+ * Lens distortion of the colour camera is removed from both images (pinhole from here on). */
 RgbdImage prepareRgbdImage(const mrpt::obs::CObservation3DRangeScan& obs);
 
 }  // namespace hrgbd

@@ -73,4 +73,18 @@ class HybridRegistration : public Registration {
   HybridPolicy m_policy;
 };
 
+/** Any registration followed by the dense refinement (DenseRefinement.h), which starts from its
+ * estimate, or from the tracker's prediction when it found none. A refinement that changes the
+ * start by more than max_correction[_deg] is not trusted: the frame is flagged (LargeResiduals). */
+class DenseRefined : public Registration {
+ public:
+  DenseRefined(std::unique_ptr<Registration> inner, const DenseParams& params);
+  FrameFeatures prepare(Frame& frame) override;
+  RegistrationResult align(Frame& cur, Frame& ref) override;
+
+ private:
+  std::unique_ptr<Registration> m_inner;
+  DenseParams m_params;
+};
+
 }  // namespace hrgbd

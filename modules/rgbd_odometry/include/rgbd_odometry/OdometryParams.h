@@ -4,6 +4,7 @@
 #include <string>
 
 #include "rgbd_core/Params.h"
+#include "rgbd_odometry/DenseRefinement.h"
 #include "rgbd_odometry/GeometricParams.h"
 #include "rgbd_odometry/MsseEstimator.h"
 #include "rgbd_odometry/OrbFeatures.h"
@@ -28,6 +29,11 @@ enum class Method {
  * listing the names otherwise. */
 Method parseMethod(const std::string& name);
 std::string toString(Method m);
+/** hybrid, rgb_only, depth_only: the paths of the paper, which the dense refinement and
+ * keyframe tracking extend; the others are baselines and peers. */
+inline bool isProductMethod(Method m) {
+  return m == Method::Hybrid || m == Method::RgbOnly || m == Method::DepthOnly;
+}
 
 /** What to do with the pose of a frame that cannot be registered. */
 enum class FailurePolicy {
@@ -56,8 +62,8 @@ MRPT_ENUM_TYPE_END()
 
 namespace hrgbd {
 
-/** Parameters of RgbdOdometry. INI section [Odometry]; the stages read [ORB], [Geometric] and
- * [MSSE]. The baselines' [RANSAC] and [ICP] are BaselineParams (rgbd_baselines). */
+/** Parameters of RgbdOdometry. INI section [Odometry]; the stages read [ORB], [Geometric],
+ * [MSSE] and [Dense]. The baselines' [RANSAC] and [ICP] are BaselineParams (rgbd_baselines). */
 struct OdometryParams : public Params<OdometryParams> {
   Method method = Method::Hybrid;  //!< registration method (all eight listed in Method)
   int min_orb_features = 50;       //!< [count] fewer ORB features with depth -> geometric path
@@ -78,13 +84,15 @@ struct OdometryParams : public Params<OdometryParams> {
   double max_step_rotation_deg = 30;  //!< [deg] larger frame-to-frame rotation is flagged too
   /** [m] Frame-to-keyframe tracking: frames are registered against the keyframe, which the
    * current frame replaces once it is this far from it. 0 = every registered frame becomes the
-   * reference: the paper's frame-to-frame chaining (Algorithm 2). */
-  double keyframe_max_translation = 0;
-  double keyframe_max_rotation_deg = 5;  //!< [deg] ... or once it has turned this much
+   * reference: the paper's frame-to-frame chaining (Algorithm 2). The baselines and peers always
+   * track frame to frame, as published. */
+  double keyframe_max_translation = 0.05;
+  double keyframe_max_rotation_deg = 3;  //!< [deg] ... or once it has turned this much
   int keyframe_min_inliers = 0;          //!< [count] ... or was registered on fewer inliers
   OrbParams orb;                         //!< section [ORB]
   GeometricParams geometric;             //!< section [Geometric]
   MsseParams msse;                       //!< section [MSSE]
+  DenseParams dense;                     //!< section [Dense]
 
   template <class P, class V>
   static void declare(P& p, V& v) {
@@ -110,6 +118,7 @@ struct OdometryParams : public Params<OdometryParams> {
     v.section(p.orb, "ORB");
     v.section(p.geometric, "Geometric");
     v.section(p.msse, "MSSE");
+    v.section(p.dense, "Dense");
   }
 };
 

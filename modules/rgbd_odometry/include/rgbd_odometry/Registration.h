@@ -11,6 +11,7 @@
 #include <string>
 
 #include "rgbd_core/RgbdImage.h"
+#include "rgbd_odometry/DenseRefinement.h"
 #include "rgbd_odometry/FrameResult.h"
 #include "rgbd_odometry/GeometricFeatures.h"
 #include "rgbd_odometry/OrbFeatures.h"
@@ -23,6 +24,10 @@ struct Frame {
   RgbdImage image;
   std::optional<FeatureSet> orb;               //!< ORB features with depth (III-B)
   std::optional<GeometricFeatures> geometric;  //!< IS3D + SHOT (III-C to III-F)
+  std::optional<DensePyramid> dense;           //!< pyramids of the dense refinement
+  /** The tracker's prediction of the motion to the reference (constant velocity), when it has
+   * one: the start of a dense registration when no sparse estimate exists. */
+  std::optional<Eigen::Isometry3d> guess;
 };
 
 /** What a registration saw of one frame on its own (the report of a first frame). */

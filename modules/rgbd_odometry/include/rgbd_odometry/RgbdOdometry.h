@@ -47,6 +47,7 @@ class RgbdOdometry {
   std::optional<Reference> m_ref;   // last registered frame, or the keyframe
   mrpt::poses::CPose3D m_pose;      // pose of the latest frame
   mrpt::poses::CPose3D m_velocity;  // last registered per-frame motion
+  bool m_previous_registered = false;
 };
 
 }  // namespace hrgbd

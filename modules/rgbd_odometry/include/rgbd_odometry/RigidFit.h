@@ -61,5 +61,7 @@ const char* toString(RigidEstimate::Status s);
 
 /** The same transform as an MRPT pose. */
 mrpt::poses::CPose3D toPose(const Eigen::Isometry3d& T);
+/** The same pose as an Eigen transform. */
+Eigen::Isometry3d toIsometry(const mrpt::poses::CPose3D& pose);
 
 }  // namespace hrgbd

@@ -1,0 +1,108 @@
+#pragma once
+/** \file DenseRefinement.h
+ * Dense refinement of a rigid motion that fuses colour and depth (beyond the paper; its future
+ * work): the sparse estimate is the start, and Gauss-Newton on SE(3) minimises over an image
+ * pyramid a joint cost of photometric residuals (intensity after warping) and point-to-plane
+ * residuals (depth), each normalised by its noise and robustly weighted (Huber).
+ *
+ * Written here because neither MRPT nor OpenCV offers it as a refinement of a given estimate with
+ * a depth-noise model: cv::rgbd::RgbdICPOdometry is a complete odometry whose cost treats every
+ * depth alike. Its ideas are those of DVO (Kerl et al.) and KinectFusion's projective ICP. */
+#include <Eigen/Geometry>
+#include <opencv2/core.hpp>
+#include <string>
+#include <vector>
+
+#include "rgbd_core/Params.h"
+#include "rgbd_core/RgbdImage.h"
+
+namespace hrgbd {
+
+/** Parameters of the dense refinement. INI section [Dense]. */
+struct DenseParams : public Params<DenseParams> {
+  bool enabled = true;   //!< refine every sparse estimate (false: the paper's sparse result)
+  int levels = 4;        //!< pyramid levels, each half the size of the one below
+  int finest_level = 1;  //!< 0 = full resolution; 1 = half (faster, nearly as accurate)
+  int iterations = 10;   //!< most Gauss-Newton steps per level
+  double photometric_weight = 1;  //!< weight of the intensity term (0 = off)
+  double geometric_weight = 1;    //!< weight of the point-to-plane term (0 = off)
+  /** [1/m] Kinect depth noise sigma = depth_noise * z^2 (Khoshelham & Elberink 2012: ~1.4e-3). */
+  double depth_noise = 0.0015;
+  double max_depth = 5.0;  //!< [m] farther depth is not used
+  /** [m] a warped point this far from the reference depth is occluded or disoccluded: left out */
+  double max_depth_difference = 0.07;
+  double min_gradient = 4;         //!< [grey levels/px] weaker intensity gradients are left out
+  double huber = 1.345;            //!< Huber threshold on residuals divided by their sigma
+  int min_pixels = 500;            //!< [count] fewer pairs at the finest level: not refined
+  double max_correction = 0.2;     //!< [m] a larger change of the start is not trusted
+  double max_correction_deg = 10;  //!< [deg] ... nor a larger rotation change
+  /** A frame registered by the refinement alone (no sparse estimate) with fewer than min_pixels
+   * intensity pairs needs surfaces facing three directions: the smallest eigenvalue of the mean
+   * n n^T of its normals at least this. Measured: simulated plain wall 0.048 (noisy normals),
+   * real plain structure 0.13, simulated structures 0.24-0.28. */
+  double min_normal_spread = 0.1;
+
+  template <class P, class V>
+  static void declare(P& p, V& v) {
+    HRGBD_PARAM(enabled, "refine every sparse estimate densely (colour + depth)");
+    HRGBD_PARAM(levels, "pyramid levels, each half the size", Range::closed(1, 8));
+    HRGBD_PARAM(finest_level, "0 = full resolution, 1 = half, ...", Range::closed(0, 7));
+    HRGBD_PARAM(iterations, "most Gauss-Newton steps per level", Range::atLeast(1));
+    HRGBD_PARAM(photometric_weight, "weight of the intensity term (0 = off)", Range::atLeast(0));
+    HRGBD_PARAM(geometric_weight, "weight of the point-to-plane term (0 = off)", Range::atLeast(0));
+    HRGBD_PARAM(depth_noise, "[1/m] depth sigma = depth_noise z^2", Range::above(0));
+    HRGBD_PARAM(max_depth, "[m] farther depth is not used", Range::above(0));
+    HRGBD_PARAM(max_depth_difference, "[m] occlusion gate between warped and reference depth",
+                Range::above(0));
+    HRGBD_PARAM(min_gradient, "[grey levels/px] weaker gradients are left out", Range::atLeast(0));
+    HRGBD_PARAM(huber, "Huber threshold on normalised residuals", Range::above(0));
+    HRGBD_PARAM(min_pixels, "[count] fewer pairs at the finest level: not refined",
+                Range::atLeast(6));
+    HRGBD_PARAM(max_correction, "[m] larger change of the sparse estimate: not trusted",
+                Range::above(0));
+    HRGBD_PARAM(max_correction_deg, "[deg] larger rotation change: not trusted",
+                Range::openClosed(0, 180));
+    HRGBD_PARAM(min_normal_spread, "registered densely alone without texture: normals must spread",
+                Range::closed(0, 1.0 / 3));
+  }
+  void checkTogether(const std::string& section) const;
+};
+
+/** One pyramid level: intensity, depth (NaN = unknown, never blended into known depth), the
+ * intensity gradients and the normals of the depth (NaN where unknown). */
+struct DenseLevel {
+  PinholeCamera cam;
+  cv::Mat grey;     //!< CV_32F, grey levels
+  cv::Mat depth;    //!< CV_32F, metres, NaN = unknown
+  cv::Mat gx, gy;   //!< CV_32F, grey levels per pixel
+  cv::Mat normals;  //!< CV_32FC3, unit, towards the camera; NaN = unknown
+};
+
+/** Levels from the finest used (index 0) to the coarsest. */
+struct DensePyramid {
+  std::vector<DenseLevel> levels;
+};
+
+DensePyramid buildDensePyramid(const RgbdImage& image, const DenseParams& params);
+
+/** Result of refineDense(). */
+struct DenseResult {
+  bool ok = false;
+  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();     //!< maps current points into reference
+  std::size_t photometric_pairs = 0, geometric_pairs = 0;  //!< at the finest level
+  int iterations = 0;                                      //!< Gauss-Newton steps, all levels
+  std::size_t start = 0;                                   //!< index of the start that fitted best
+  /** smallest eigenvalue of the mean n n^T of the paired reference normals: near 0 when the
+   * surfaces seen do not face three independent directions (a plane, a corner) */
+  double normal_spread = 0;
+  std::string detail;  //!< why, when not ok
+};
+
+/** Refines a motion (current -> reference) by minimising the joint cost, coarse to fine. Each of
+ * `starts` is refined at the coarsest level and the one that fits best (most points paired with
+ * small residuals) goes on: a wrong sparse estimate loses against the motion prediction. Not ok
+ * (T = starts[0]) when the finest level has fewer than min_pixels pairs in all. */
+DenseResult refineDense(const DensePyramid& cur, const DensePyramid& ref,
+                        const std::vector<Eigen::Isometry3d>& starts, const DenseParams& params);
+
+}  // namespace hrgbd

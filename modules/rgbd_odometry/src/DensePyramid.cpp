@@ -1,0 +1,99 @@
+// Image pyramids for the dense refinement: intensity by 2x2 means (OpenCV), depth by a 2x2 rule
+// written here because OpenCV's pyramids blend unknown depth (0) into known depth.
+#include <cmath>
+#include <limits>
+#include <opencv2/imgproc.hpp>
+
+#include "rgbd_odometry/DenseRefinement.h"
+
+namespace hrgbd {
+namespace {
+
+constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+
+// Half-size depth: the mean of the known values of each 2x2 block that lie on the nearest
+// surface (within 3 % of the nearest); NaN when none is known.
+cv::Mat halveDepth(const cv::Mat& d) {
+  cv::Mat out(d.rows / 2, d.cols / 2, CV_32F);
+  for (int v = 0; v < out.rows; ++v)
+    for (int u = 0; u < out.cols; ++u) {
+      const float z[4] = {d.at<float>(2 * v, 2 * u), d.at<float>(2 * v, 2 * u + 1),
+                          d.at<float>(2 * v + 1, 2 * u), d.at<float>(2 * v + 1, 2 * u + 1)};
+      float nearest = std::numeric_limits<float>::infinity();
+      for (float zi : z)
+        if (zi < nearest) nearest = zi;  // false for NaN
+      float sum = 0;
+      int n = 0;
+      for (float zi : z)
+        if (zi <= nearest * 1.03f) sum += zi, ++n;
+      out.at<float>(v, u) = n ? sum / n : kNaN;
+    }
+  return out;
+}
+
+// Unit normals from the cross product of central differences of the back-projected depth; NaN
+// where a neighbour is unknown or across a jump larger than `max_jump` [m].
+cv::Mat depthNormals(const cv::Mat& depth, const PinholeCamera& cam, double max_jump) {
+  cv::Mat n(depth.size(), CV_32FC3, cv::Scalar::all(kNaN));
+  auto vertex = [&](int u, int v) {
+    return cam.backProject(u, v, depth.at<float>(v, u)).cast<float>().eval();
+  };
+  for (int v = 1; v + 1 < depth.rows; ++v)
+    for (int u = 1; u + 1 < depth.cols; ++u) {
+      const float z = depth.at<float>(v, u);
+      const float zs[4] = {depth.at<float>(v, u - 1), depth.at<float>(v, u + 1),
+                           depth.at<float>(v - 1, u), depth.at<float>(v + 1, u)};
+      bool ok = std::isfinite(z);
+      for (float zi : zs) ok = ok && std::abs(zi - z) <= max_jump;  // false for NaN
+      if (!ok) continue;
+      const Eigen::Vector3f dx = vertex(u + 1, v) - vertex(u - 1, v);
+      const Eigen::Vector3f dy = vertex(u, v + 1) - vertex(u, v - 1);
+      Eigen::Vector3f nv = dx.cross(dy);
+      if (nv.norm() <= 0) continue;
+      nv.normalize();
+      if (nv.dot(vertex(u, v)) > 0) nv = -nv;
+      n.at<cv::Vec3f>(v, u) = cv::Vec3f(nv.x(), nv.y(), nv.z());
+    }
+  return n;
+}
+
+PinholeCamera halveCamera(PinholeCamera c) {
+  c.fx /= 2, c.fy /= 2;
+  c.cx = (c.cx + 0.5) / 2 - 0.5, c.cy = (c.cy + 0.5) / 2 - 0.5;
+  c.width /= 2, c.height /= 2;
+  return c;
+}
+
+}  // namespace
+
+void DenseParams::checkTogether(const std::string& section) const {
+  if (finest_level >= levels)
+    throw ConfigError("[" + section + "] finest_level = " + std::to_string(finest_level) +
+                      " must be below levels = " + std::to_string(levels));
+}
+
+DensePyramid buildDensePyramid(const RgbdImage& image, const DenseParams& params) {
+  DenseLevel level;
+  level.cam = image.cam;
+  image.grey.convertTo(level.grey, CV_32F);
+  image.depth.copyTo(level.depth);
+  level.depth.setTo(kNaN, ~((level.depth > 0) & (level.depth <= params.max_depth)));
+  DensePyramid pyramid;
+  for (int l = 0; l < params.levels; ++l) {
+    if (l > 0) {
+      cv::resize(level.grey, level.grey, cv::Size(level.depth.cols / 2, level.depth.rows / 2), 0, 0,
+                 cv::INTER_AREA);
+      level.depth = halveDepth(level.depth);
+      level.cam = halveCamera(level.cam);
+    }
+    if (l < params.finest_level) continue;
+    DenseLevel out{level.cam, level.grey, level.depth, {}, {}, {}};
+    cv::Sobel(out.grey, out.gx, CV_32F, 1, 0, 1, 0.5);  // central differences
+    cv::Sobel(out.grey, out.gy, CV_32F, 0, 1, 1, 0.5);
+    out.normals = depthNormals(out.depth, out.cam, params.max_depth_difference);
+    pyramid.levels.push_back(std::move(out));
+  }
+  return pyramid;
+}
+
+}  // namespace hrgbd

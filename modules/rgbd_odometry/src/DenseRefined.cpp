@@ -1,0 +1,65 @@
+#include <mrpt/core/bits_math.h>
+
+#include "rgbd_core/Timing.h"
+#include "rgbd_odometry/FeatureRegistration.h"
+
+namespace hrgbd {
+namespace {
+
+bool withinCorrection(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b,
+                      const DenseParams& p) {
+  const Eigen::Isometry3d d = a.inverse() * b;
+  return d.translation().norm() <= p.max_correction &&
+         mrpt::RAD2DEG(Eigen::AngleAxisd(d.rotation()).angle()) <= p.max_correction_deg;
+}
+
+// Within 1 cm and 1 degree: one refinement serves both.
+bool agree(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b) {
+  const Eigen::Isometry3d d = a.inverse() * b;
+  return d.translation().norm() <= 0.01 && Eigen::AngleAxisd(d.rotation()).angle() <= 0.0175;
+}
+
+}  // namespace
+
+DenseRefined::DenseRefined(std::unique_ptr<Registration> inner, const DenseParams& params)
+    : m_inner(std::move(inner)), m_params(params) {}
+
+FrameFeatures DenseRefined::prepare(Frame& frame) {
+  FrameFeatures seen = m_inner->prepare(frame);
+  if (!frame.dense)
+    frame.dense = timed(seen.ms.refine, [&] { return buildDensePyramid(frame.image, m_params); });
+  return seen;
+}
+
+RegistrationResult DenseRefined::align(Frame& cur, Frame& ref) {
+  RegistrationResult r = m_inner->align(cur, ref);
+  if (!ref.dense) prepare(ref);
+  std::vector<Eigen::Isometry3d> starts;
+  if (r.ok()) starts.push_back(r.T);
+  // the prediction competes with the sparse estimate when they disagree
+  if (cur.guess && (starts.empty() || !agree(starts[0], *cur.guess))) starts.push_back(*cur.guess);
+  if (starts.empty()) return r;
+  const DenseResult d = timed(
+      r.seen.ms.refine, [&] { return refineDense(*cur.dense, *ref.dense, starts, m_params); });
+  if (!d.ok) {
+    if (!r.ok()) r.detail += "; " + d.detail;
+    return r;  // too little to refine with: the sparse estimate stands (or the failure)
+  }
+  if (!r.ok() && d.photometric_pairs < static_cast<std::size_t>(m_params.min_pixels) &&
+      d.normal_spread < m_params.min_normal_spread) {
+    r.detail += "; dense: too little texture and a plain surface (normal spread " +
+                std::to_string(d.normal_spread) + ")";
+    return r;
+  }
+  if (!withinCorrection(starts[d.start], d.T, m_params)) {
+    r.status = FrameResult::Status::LargeResiduals;
+    r.detail = "dense refinement moved the start too far: neither estimate is trusted";
+    return r;
+  }
+  r.seen.path = r.ok() && d.start == 0 ? r.seen.path + "+dense" : "dense";
+  r.T = d.T;
+  r.status = FrameResult::Status::Ok;
+  return r;
+}
+
+}  // namespace hrgbd

@@ -1,0 +1,216 @@
+// Gauss-Newton on SE(3) over the pyramid: every known-depth pixel of the current frame is moved
+// into the reference by T and projected; its photometric residual is I_ref(q) - I_cur(p), its
+// geometric residual the distance to the reference's tangent plane at q (projective pairing).
+#include "rgbd_odometry/DenseRefinement.h"
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+
+namespace hrgbd {
+namespace {
+
+using Vector6d = Eigen::Matrix<double, 6, 1>;
+using Matrix6d = Eigen::Matrix<double, 6, 6>;
+
+// Bilinear sample of a CV_32F image at (u, v), inside [0, cols - 1) x [0, rows - 1).
+float bilinear(const cv::Mat& m, float u, float v) {
+  const int u0 = static_cast<int>(u), v0 = static_cast<int>(v);
+  const float a = u - u0, b = v - v0;
+  const float* r0 = m.ptr<float>(v0) + u0;
+  const float* r1 = m.ptr<float>(v0 + 1) + u0;
+  return (1 - b) * ((1 - a) * r0[0] + a * r0[1]) + b * ((1 - a) * r1[0] + a * r1[1]);
+}
+
+// Jacobian of a residual whose derivative with respect to the moved point P is g, for a left
+// perturbation exp(delta) T with delta = (translation, rotation).
+Vector6d jacobian(const Eigen::Vector3d& P, const Eigen::Vector3d& g) {
+  Vector6d J;
+  J << g, P.cross(g);
+  return J;
+}
+
+// The point of the current frame with its intensity.
+struct CurrentPoint {
+  Eigen::Vector3d P;
+  float grey;
+};
+
+std::vector<CurrentPoint> currentPoints(const DenseLevel& c) {
+  std::vector<CurrentPoint> pts;
+  pts.reserve(c.depth.total());
+  for (int v = 0; v < c.depth.rows; ++v)
+    for (int u = 0; u < c.depth.cols; ++u) {
+      const float z = c.depth.at<float>(v, u);
+      if (std::isfinite(z)) pts.push_back({c.cam.backProject(u, v, z), c.grey.at<float>(v, u)});
+    }
+  return pts;
+}
+
+// The Gauss-Newton system of one evaluation: H delta = -b, and the mean robust cost.
+struct NormalEquations {
+  Matrix6d H = Matrix6d::Zero();
+  Vector6d b = Vector6d::Zero();
+  double cost = 0;
+  /** Comparable between poses: every (point, term) slot costs the Huber cost capped at
+   * e = 3 huber, a point without a pair the cap; mean over the slots. */
+  double score = 0;
+  std::size_t photometric = 0, geometric = 0;         //!< pairs
+  Eigen::Matrix3d normals = Eigen::Matrix3d::Zero();  //!< sum of n n^T over geometric pairs
+};
+
+class LevelSolver {
+ public:
+  LevelSolver(const DenseLevel& cur, const DenseLevel& ref, const DenseParams& p)
+      : m_ref(ref), m_p(p), m_points(currentPoints(cur)) {}
+
+  // Photometric noise scale at T: 1.4826 x the median absolute residual (at least one level).
+  double photometricSigma(const Eigen::Isometry3d& T) const {
+    std::vector<float> a;
+    a.reserve(m_points.size());
+    forEachPair(T, [&](const Eigen::Vector3d&, double u, double v, int, int, float, float grey) {
+      a.push_back(std::abs(bilinear(m_ref.grey, u, v) - grey));
+    });
+    if (a.empty()) return 1;
+    std::nth_element(a.begin(), a.begin() + a.size() / 2, a.end());
+    return std::max(1.0, 1.4826 * a[a.size() / 2]);
+  }
+
+  // Normal equations of the Huber-weighted, noise-normalised residuals of both terms at T.
+  NormalEquations normalEquations(const Eigen::Isometry3d& T, double photo_sigma) const {
+    NormalEquations n;
+    const double k = m_p.huber, cap = 2.5 * k * k;  // Huber cost at e = 3k
+    auto add = [&](const Vector6d& J, double r, double sigma, double weight) {
+      const double e = std::abs(r) / sigma;
+      const double w = weight * (e <= k ? 1 : k / e) / (sigma * sigma);
+      n.H.noalias() += (w * J) * J.transpose();
+      n.b.noalias() += (w * r) * J;
+      const double rho = e <= k ? 0.5 * e * e : k * (e - 0.5 * k);
+      n.cost += weight * rho;
+      n.score += std::min(rho, cap);
+    };
+    const auto& c = m_ref.cam;
+    forEachPair(
+        T, [&](const Eigen::Vector3d& P, double u, double v, int ui, int vi, float zr, float grey) {
+          if (m_p.photometric_weight > 0) {
+            const double gx = bilinear(m_ref.gx, u, v), gy = bilinear(m_ref.gy, u, v);
+            if (gx * gx + gy * gy >= m_p.min_gradient * m_p.min_gradient) {
+              const double iz = 1 / P.z();
+              const Eigen::Vector3d g(gx * c.fx * iz, gy * c.fy * iz,
+                                      -(gx * c.fx * P.x() + gy * c.fy * P.y()) * iz * iz);
+              add(jacobian(P, g), bilinear(m_ref.grey, u, v) - grey, photo_sigma,
+                  m_p.photometric_weight);
+              ++n.photometric;
+            }
+          }
+          if (m_p.geometric_weight <= 0 || !std::isfinite(zr)) return;
+          const cv::Vec3f nv = m_ref.normals.at<cv::Vec3f>(vi, ui);
+          if (!std::isfinite(nv[0])) return;
+          const Eigen::Vector3d nr(nv[0], nv[1], nv[2]);
+          const Eigen::Vector3d V = c.backProject(ui, vi, zr);
+          // both depths are noisy: the sigma of the difference of two readings at about this depth
+          const double sigma = std::sqrt(2.0) * m_p.depth_noise * P.z() * P.z();
+          add(jacobian(P, nr), nr.dot(P - V), sigma, m_p.geometric_weight);
+          ++n.geometric;
+          n.normals.noalias() += nr * nr.transpose();
+        });
+    n.H = n.H.selfadjointView<Eigen::Lower>();
+    const std::size_t pairs = n.photometric + n.geometric;
+    const std::size_t slots =
+        m_points.size() * ((m_p.photometric_weight > 0) + (m_p.geometric_weight > 0));
+    n.cost /= std::max<std::size_t>(1, pairs);
+    n.score = slots ? (n.score + (slots - pairs) * cap) / slots : cap;
+    return n;
+  }
+
+ private:
+  // Calls f(P, u, v, ui, vi, z_ref, grey) for every current point that T moves into the
+  // reference image without landing in front of or behind the reference depth (occlusion
+  // gate; unknown reference depth passes, for the photometric term).
+  template <class F>
+  void forEachPair(const Eigen::Isometry3d& T, F f) const {
+    const auto& c = m_ref.cam;
+    for (const auto& pt : m_points) {
+      const Eigen::Vector3d P = T * pt.P;
+      if (P.z() <= 0) continue;
+      const double u = c.fx * P.x() / P.z() + c.cx, v = c.fy * P.y() / P.z() + c.cy;
+      if (!(u >= 0 && v >= 0 && u < c.width - 1 && v < c.height - 1)) continue;
+      const int ui = static_cast<int>(u + 0.5), vi = static_cast<int>(v + 0.5);
+      const float zr = m_ref.depth.at<float>(vi, ui);
+      if (std::abs(zr - P.z()) > m_p.max_depth_difference) continue;  // false for NaN
+      f(P, u, v, ui, vi, zr, pt.grey);
+    }
+  }
+
+  const DenseLevel& m_ref;
+  const DenseParams& m_p;
+  std::vector<CurrentPoint> m_points;
+};
+
+Eigen::Isometry3d expSe3(const Vector6d& d) {
+  Eigen::Isometry3d E = Eigen::Isometry3d::Identity();
+  const Eigen::Vector3d w = d.tail<3>();
+  if (w.norm() > 0) E.linear() = Eigen::AngleAxisd(w.norm(), w.normalized()).toRotationMatrix();
+  E.translation() = d.head<3>();
+  return E;
+}
+
+// Gauss-Newton at one level from T; returns the last evaluation (at the returned T).
+NormalEquations solveLevel(const LevelSolver& solver, Eigen::Isometry3d& T, const DenseParams& p,
+                           int& iterations) {
+  const double photo_sigma = solver.photometricSigma(T);  // fixed per level
+  NormalEquations n = solver.normalEquations(T, photo_sigma);
+  for (int it = 0; it < p.iterations && n.photometric + n.geometric >= 6; ++it) {
+    const Vector6d delta = n.H.ldlt().solve(-n.b);
+    if (!delta.allFinite()) break;
+    const Eigen::Isometry3d next = expSe3(delta) * T;
+    NormalEquations n2 = solver.normalEquations(next, photo_sigma);
+    ++iterations;
+    if (n2.cost > n.cost) break;  // a step uphill: keep the previous estimate
+    T = next, n = n2;
+    if (delta.norm() < 1e-4) break;  // 0.1 mm, 0.006 deg
+  }
+  return n;
+}
+
+}  // namespace
+
+DenseResult refineDense(const DensePyramid& cur, const DensePyramid& ref,
+                        const std::vector<Eigen::Isometry3d>& starts, const DenseParams& p) {
+  DenseResult out;
+  if (starts.empty() || cur.levels.empty() || cur.levels.size() != ref.levels.size()) {
+    out.detail = "dense refinement: no start or pyramids of different depth";
+    return out;
+  }
+  out.T = starts.front();
+  std::vector<LevelSolver> solvers;
+  for (std::size_t l = 0; l < cur.levels.size(); ++l)
+    solvers.emplace_back(cur.levels[l], ref.levels[l], p);
+  // every start is refined coarse to fine; the best score at the finest level wins
+  double best = 1e300;
+  Eigen::Isometry3d T = starts.front();
+  for (std::size_t i = 0; i < starts.size(); ++i) {
+    Eigen::Isometry3d Ti = starts[i];
+    NormalEquations n;
+    for (int l = static_cast<int>(solvers.size()) - 1; l >= 0; --l)
+      n = solveLevel(solvers[l], Ti, p, out.iterations);
+    if (n.score < best) {
+      best = n.score, T = Ti, out.start = i;
+      out.photometric_pairs = n.photometric, out.geometric_pairs = n.geometric;
+      out.normal_spread =
+          n.geometric ? Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(n.normals / n.geometric)
+                            .eigenvalues()(0)
+                      : 0;
+    }
+  }
+  if (out.photometric_pairs + out.geometric_pairs < static_cast<std::size_t>(p.min_pixels)) {
+    out.detail = "dense refinement: " + std::to_string(out.photometric_pairs) + " photometric + " +
+                 std::to_string(out.geometric_pairs) + " geometric pairs < min_pixels";
+    return out;
+  }
+  out.ok = true;
+  out.T = T;
+  return out;
+}
+
+}  // namespace hrgbd

@@ -1,0 +1,140 @@
+// The dense refinement on rendered pairs with an exact relative pose: convergence from a few cm
+// and degrees off, a correct estimate left in place, the better of two starts, and no
+// refinement without anything to refine with.
+#include "rgbd_odometry/DenseRefinement.h"
+
+#include <gtest/gtest.h>
+#include <mrpt/core/bits_math.h>
+
+#include <opencv2/imgproc.hpp>
+
+#include "rgbd_odometry/RigidFit.h"
+#include "rgbd_sim/Render.h"
+#include "rgbd_sim/Simulator.h"
+
+namespace {
+
+using Eigen::Isometry3d;
+using hrgbd::DensePyramid;
+
+hrgbd::RgbdImage render(const hrgbd::sim::Scene& scene, const mrpt::poses::CPose3D& pose) {
+  const hrgbd::PinholeCamera cam;
+  const auto ideal = hrgbd::sim::renderIdeal(scene, pose, cam);
+  hrgbd::RgbdImage f;
+  cv::Mat grey;
+  cv::cvtColor(ideal.colour, grey, cv::COLOR_RGB2GRAY);
+  grey.convertTo(f.grey, CV_8U, 255);
+  f.depth = ideal.depth;
+  f.cam = cam;
+  return f;
+}
+
+struct Pair {
+  DensePyramid cur, ref;
+  Isometry3d truth;  // current -> reference
+};
+
+Pair renderPair(const std::string& scene_type, const mrpt::poses::CPose3D& motion,
+                const hrgbd::DenseParams& p = {}) {
+  const auto scene = hrgbd::sim::makeScene(scene_type, false);
+  const auto ref_pose =
+      hrgbd::sim::lookAt(Eigen::Vector3d(0, 0.0, 1.2), Eigen::Vector3d(0, 1.3, 0.75));
+  const auto cur_pose = ref_pose + motion;
+  return {hrgbd::buildDensePyramid(render(scene, cur_pose), p),
+          hrgbd::buildDensePyramid(render(scene, ref_pose), p), hrgbd::toIsometry(motion)};
+}
+
+// Translation [m] and rotation [deg] between two motions.
+std::pair<double, double> error(const Isometry3d& a, const Isometry3d& b) {
+  const Isometry3d d = a.inverse() * b;
+  return {d.translation().norm(), mrpt::RAD2DEG(Eigen::AngleAxisd(d.rotation()).angle())};
+}
+
+Isometry3d perturbed(const Isometry3d& T, double metres, double deg) {
+  return T * hrgbd::toIsometry(mrpt::poses::CPose3D(metres, -metres, metres / 2, mrpt::DEG2RAD(deg),
+                                                    mrpt::DEG2RAD(-deg), 0));
+}
+
+const mrpt::poses::CPose3D kMotion(0.03, -0.01, 0.02, mrpt::DEG2RAD(2.0), mrpt::DEG2RAD(-1.0),
+                                   mrpt::DEG2RAD(1.5));
+
+}  // namespace
+
+TEST(DenseRefinement, ConvergesFromCentimetresAndDegreesOff) {
+  const auto pair = renderPair("desk", kMotion);
+  const Isometry3d start = perturbed(pair.truth, 0.02, 2.0);
+  const auto [t0, r0] = error(start, pair.truth);
+  ASSERT_GT(t0, 0.02);
+  ASSERT_GT(r0, 2.0);
+  const auto d = hrgbd::refineDense(pair.cur, pair.ref, {start}, hrgbd::DenseParams());
+  ASSERT_TRUE(d.ok) << d.detail;
+  const auto [t, r] = error(d.T, pair.truth);
+  EXPECT_LT(t, 0.001);
+  EXPECT_LT(r, 0.05);
+}
+
+TEST(DenseRefinement, EachTermAloneConvergesOnItsOwnCue) {
+  for (const char* term : {"photometric", "geometric"}) {
+    hrgbd::DenseParams p;
+    (term == std::string("photometric") ? p.geometric_weight : p.photometric_weight) = 0;
+    const auto pair = renderPair("desk", kMotion, p);
+    const auto d = hrgbd::refineDense(pair.cur, pair.ref, {perturbed(pair.truth, 0.01, 1.0)}, p);
+    ASSERT_TRUE(d.ok) << term << ": " << d.detail;
+    EXPECT_LT(error(d.T, pair.truth).first, 0.002) << term;
+    EXPECT_EQ(term == std::string("photometric") ? d.geometric_pairs : d.photometric_pairs, 0u)
+        << term;
+  }
+}
+
+TEST(DenseRefinement, LeavesACorrectEstimateInPlace) {
+  const auto pair = renderPair("desk", kMotion);
+  const auto d = hrgbd::refineDense(pair.cur, pair.ref, {pair.truth}, hrgbd::DenseParams());
+  ASSERT_TRUE(d.ok) << d.detail;
+  // the fixed point of ideal renders (rays through pixel centres, bilinear sampling) lies within
+  // 0.5 mm and 0.03 degrees of the truth (measured 0.49 mm, 0.022 deg)
+  const auto [t, r] = error(d.T, pair.truth);
+  EXPECT_LT(t, 0.0007);
+  EXPECT_LT(r, 0.03);
+}
+
+TEST(DenseRefinement, TheBetterStartWins) {
+  const auto pair = renderPair("desk", kMotion);
+  const Isometry3d wrong = perturbed(pair.truth, 0.15, 12.0);  // beyond the basin
+  const Isometry3d near = perturbed(pair.truth, 0.01, 1.0);
+  for (const auto& starts : {std::vector<Isometry3d>{wrong, near}, {near, wrong}}) {
+    const auto d = hrgbd::refineDense(pair.cur, pair.ref, starts, hrgbd::DenseParams());
+    ASSERT_TRUE(d.ok) << d.detail;
+    EXPECT_TRUE(starts[d.start].isApprox(near));
+    EXPECT_LT(error(d.T, pair.truth).first, 0.001);
+  }
+}
+
+TEST(DenseRefinement, NothingToRefineWithIsNotOk) {
+  auto pair = renderPair("desk", kMotion);
+  for (auto& level : pair.cur.levels) level.depth.setTo(std::nanf(""));  // no depth at all
+  const Isometry3d start = perturbed(pair.truth, 0.01, 1.0);
+  const auto d = hrgbd::refineDense(pair.cur, pair.ref, {start}, hrgbd::DenseParams());
+  EXPECT_FALSE(d.ok);
+  EXPECT_NE(d.detail.find("min_pixels"), std::string::npos) << d.detail;
+  EXPECT_TRUE(d.T.isApprox(start));
+}
+
+TEST(DenseRefinement, UnknownDepthNeverBlendsIntoTheCoarserLevels) {
+  hrgbd::RgbdImage f;
+  f.grey = cv::Mat(8, 8, CV_8U, cv::Scalar(100));
+  f.depth = cv::Mat(8, 8, CV_32F, cv::Scalar(2.0f));
+  f.depth(cv::Rect(0, 0, 2, 2)).setTo(0);     // a hole: one whole block at level 1
+  f.depth.at<float>(4, 4) = 0;                // one unknown pixel of a block
+  f.depth(cv::Rect(6, 6, 2, 2)).setTo(1.0f);  // a nearer surface ...
+  f.depth.at<float>(7, 7) = 3.0f;             // ... with one far pixel behind it
+  f.cam = {4, 4, 3.5, 3.5, 8, 8};
+  hrgbd::DenseParams p;
+  p.levels = 2, p.finest_level = 0;
+  const auto pyr = hrgbd::buildDensePyramid(f, p);
+  ASSERT_EQ(pyr.levels.size(), 2u);
+  const cv::Mat& half = pyr.levels[1].depth;
+  EXPECT_TRUE(std::isnan(half.at<float>(0, 0)));
+  EXPECT_FLOAT_EQ(half.at<float>(2, 2), 2.0f);
+  EXPECT_FLOAT_EQ(half.at<float>(3, 3), 1.0f);  // the nearest surface, not a blend with 3 m
+  EXPECT_TRUE(std::isnan(pyr.levels[0].depth.at<float>(4, 4)));
+}
