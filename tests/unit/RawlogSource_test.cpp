@@ -31,6 +31,7 @@ void writeMixedRawlog(const std::string& path, hrgbd::ImageStorage images) {
   sf.insert(mrpt::obs::CObservationOdometry::Create());
   w.write(sf);
   w.write(*frame(4.0, 8000));
+  w.close();
 }
 
 std::vector<double> readAll(hrgbd::RawlogSource& src) {
@@ -150,6 +151,7 @@ TEST(RawlogSource, RawlogWithoutRgbdFramesCountsWhatItSkipped) {
   {
     hrgbd::RawlogWriter w(dir + "/odo.rawlog");
     for (int i = 0; i < 3; ++i) w.write(mrpt::obs::CObservationOdometry());
+    w.close();
   }
   hrgbd::RawlogSource src(dir + "/odo.rawlog");
   EXPECT_EQ(src.next(), nullptr);
