@@ -22,15 +22,11 @@ bool sameFile(const fs::path& a, const fs::path& b) {
   return fs::equivalent(a, b, ec) && !ec;
 }
 
-/** `inner` is `folder` or lies somewhere inside it. */
-bool inside(const fs::path& inner, const fs::path& folder) {
-  auto i = inner.begin();
-  for (auto f = folder.begin(); f != folder.end(); ++f, ++i)
-    if (f->empty() && std::next(f) == folder.end())
-      break;  // trailing separator
-    else if (i == inner.end() || *i != *f)
-      return false;
-  return true;
+/** `inner` is `folder` or lies somewhere inside it (both resolved). */
+bool inside(const fs::path& inner, fs::path folder) {
+  if (folder.filename().empty()) folder = folder.parent_path();  // "x_Images/"
+  const auto rel = inner.lexically_relative(folder);
+  return !rel.empty() && *rel.begin() != "..";
 }
 
 /** A device, FIFO or socket that exists: written in place, any number of outputs may share it. */
@@ -50,13 +46,20 @@ std::string quoted(const JobPath& p) { return p.name + " '" + p.path + "'"; }
 }  // namespace
 
 void checkJobPaths(const std::vector<JobPath>& inputs, const std::vector<JobPath>& outputs) {
+  auto resolveAll = [](const std::vector<JobPath>& paths) {
+    std::vector<fs::path> out;
+    for (const auto& p : paths) out.push_back(p.path.empty() ? fs::path() : resolved(p.path));
+    return out;
+  };
+  const auto in_paths = resolveAll(inputs), out_paths = resolveAll(outputs);
   for (std::size_t k = 0; k < outputs.size(); ++k) {
     const auto& out = outputs[k];
+    const auto& o = out_paths[k];
     if (out.path.empty()) continue;
-    const auto o = resolved(out.path);
-    for (const auto& in : inputs) {
+    for (std::size_t n = 0; n < inputs.size(); ++n) {
+      const auto& in = inputs[n];
+      const auto& i = in_paths[n];
       if (in.path.empty()) continue;
-      const auto i = resolved(in.path);
       if (sameFile(o, i)) conflict(out, quoted(out) + " would overwrite " + quoted(in));
       if (in.folder && inside(o, i)) conflict(out, quoted(out) + " lies inside " + quoted(in));
       if (out.folder && inside(i, o))
@@ -65,8 +68,7 @@ void checkJobPaths(const std::vector<JobPath>& inputs, const std::vector<JobPath
     for (std::size_t j = 0; j < k; ++j) {
       const auto& other = outputs[j];
       if (other.path.empty() || out.folder || other.folder) continue;
-      const auto p = resolved(other.path);
-      if (sameFile(o, p) && !special(o))
+      if (sameFile(o, out_paths[j]) && !special(o))
         conflict(out.from_command_line ? out : other,
                  quoted(other) + " and " + quoted(out) + " are the same file");
     }
