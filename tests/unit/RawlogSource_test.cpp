@@ -161,8 +161,10 @@ TEST(RawlogSource, RawlogWithoutRgbdFramesCountsWhatItSkipped) {
 
 TEST(RawlogSource, FramesWithoutAUsableTimeStampAreAnErrorNamingTheEntry) {
   // Unset (MRPT's 1601), before 1970 (MRPT's toDouble wraps it to 1.8e12 s), beyond 1e11 s.
+  // Any 64-bit count, as a corrupt rawlog may hold, is handled without overflow.
   for (const auto& stamp : {mrpt::Clock::time_point(), mrpt::Clock::fromDouble(-1),
-                            mrpt::Clock::time_point(mrpt::Clock::duration(INT64_MAX))}) {
+                            mrpt::Clock::time_point(mrpt::Clock::duration(INT64_MAX)),
+                            mrpt::Clock::time_point(mrpt::Clock::duration(INT64_MIN))}) {
     const auto dir = hrgbd::test::tempDir("rawlog_stamp");
     {
       hrgbd::RawlogWriter w(dir + "/s.rawlog");

@@ -1,6 +1,7 @@
 // Frame time stamps read and written exactly, or refused with the reason (Timestamp.h).
 #include "rgbd_core/Timestamp.h"
 
+#include <cstdint>
 #include <cstdlib>
 
 #include "TestData.h"
@@ -52,6 +53,9 @@ TEST(Timestamp, StampsMrptsClockCannotHoldAreRefusedWithTheReason) {
   EXPECT_THROW(hrgbd::checkFrameTime(mrpt::Clock::time_point()), std::invalid_argument);
   EXPECT_THROW(hrgbd::checkFrameTime(mrpt::Clock::fromDouble(-1)), std::invalid_argument);
   EXPECT_NO_THROW(hrgbd::checkFrameTime(hrgbd::parseFrameTime("0")));
+  const auto most = mrpt::Clock::time_point(mrpt::Clock::duration(INT64_MIN));
+  EXPECT_EQ(hrgbd::formatFrameTime(most), "-933981677285.477580800");  // 2^63 ticks before 1601
+  EXPECT_THROW(hrgbd::checkFrameTime(most), std::invalid_argument);
   EXPECT_THROW(hrgbd::frameTimeFromSeconds(-1), std::invalid_argument);
   EXPECT_THROW(hrgbd::frameTimeFromSeconds(1e308), std::invalid_argument);
   EXPECT_EQ(hrgbd::formatFrameTime(hrgbd::frameTimeFromSeconds(1000.5)), "1000.500000000");

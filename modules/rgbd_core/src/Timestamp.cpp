@@ -21,7 +21,18 @@ constexpr int kTickDecimals = 7;       // 100 ns
 constexpr int kMaxIntegerDigits = 11;  // below 1e11 s
 static_assert(kMaxFrameSeconds == 1e11);
 
-std::int64_t unixTicks(TimePoint t) { return t.time_since_epoch().count() - kUnixEpochTicks; }
+/** |ticks since 1970| and whether they lie before it; any int64 count (a corrupt rawlog holds
+ * anything) without overflow. */
+struct UnixTicks {
+  bool before = false;
+  std::uint64_t magnitude = 0;
+};
+UnixTicks unixTicks(TimePoint t) {
+  const auto count = static_cast<std::uint64_t>(t.time_since_epoch().count());
+  const auto epoch = static_cast<std::uint64_t>(kUnixEpochTicks);
+  if (t.time_since_epoch().count() >= kUnixEpochTicks) return {false, count - epoch};
+  return {true, epoch - count};  // modulo 2^64: right for negative counts too
+}
 
 }  // namespace
 
@@ -80,9 +91,10 @@ TimePoint parseFrameTime(const std::string& text) {
 
 void checkFrameTime(TimePoint t) {
   if (t == TimePoint()) throw std::invalid_argument("the frame has no time stamp");
-  if (unixTicks(t) < 0)
+  const auto u = unixTicks(t);
+  if (u.before && u.magnitude > 0)
     throw std::invalid_argument("time stamp " + formatFrameTime(t) + " lies before 1970");
-  if (unixTicks(t) >= static_cast<std::int64_t>(kMaxFrameSeconds) * kTicksPerSecond)
+  if (u.magnitude >= static_cast<std::uint64_t>(kMaxFrameSeconds) * kTicksPerSecond)
     throw std::invalid_argument("time stamp " + formatFrameTime(t) +
                                 " is not below 1e11 s (the year 5138)");
 }
@@ -95,18 +107,17 @@ TimePoint frameTimeFromSeconds(double seconds) {
 }
 
 double frameSeconds(TimePoint t) {
-  return static_cast<double>(unixTicks(t)) / static_cast<double>(kTicksPerSecond);
+  const auto u = unixTicks(t);
+  const double s = static_cast<double>(u.magnitude) / static_cast<double>(kTicksPerSecond);
+  return u.before ? -s : s;
 }
 
 std::string formatFrameTime(TimePoint t) {
-  const std::int64_t ticks = unixTicks(t);
-  // Magnitude as unsigned: -INT64_MIN does not fit an int64.
-  const auto magnitude =
-      ticks < 0 ? 0 - static_cast<std::uint64_t>(ticks) : static_cast<std::uint64_t>(ticks);
+  const auto u = unixTicks(t);
   char buf[48];
-  std::snprintf(buf, sizeof buf, "%s%llu.%07llu00", ticks < 0 ? "-" : "",
-                static_cast<unsigned long long>(magnitude / kTicksPerSecond),
-                static_cast<unsigned long long>(magnitude % kTicksPerSecond));
+  std::snprintf(buf, sizeof buf, "%s%llu.%07llu00", u.before ? "-" : "",
+                static_cast<unsigned long long>(u.magnitude / kTicksPerSecond),
+                static_cast<unsigned long long>(u.magnitude % kTicksPerSecond));
   return buf;
 }
 
