@@ -5,7 +5,7 @@ SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 PKGS=(
   build-essential cmake pkg-config git
-  libmrpt-dev mrpt-apps mrpt-common libjpeg-dev
+  libmrpt-dev mrpt-apps mrpt-common libjpeg-dev zlib1g-dev
   libopencv-dev libopencv-contrib-dev
   libeigen3-dev libnanoflann-dev libopenni2-dev
   libgtest-dev libgmock-dev libbenchmark-dev

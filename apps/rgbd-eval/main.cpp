@@ -2,6 +2,7 @@
 #include <iostream>
 
 #include "rgbd_cli/CommandLine.h"
+#include "rgbd_core/JobPaths.h"
 #include "rgbd_eval/EvalPlot.h"
 #include "rgbd_eval/Evaluate.h"
 
@@ -21,11 +22,22 @@ int main(int argc, char** argv) {
   TCLAP::ValueArg<double> delta("", "rpe-delta", "RPE interval [s], > 0 (1.0)", false, 1.0,
                                 cmd.above(0.0, "SECONDS"), cmd);
   return cmd.run(argc, argv, [&] {
+    hrgbd::checkJobPaths({{gt.getValue(), "the ground truth"}, {est.getValue(), "the estimate"}},
+                         {{plot.getValue(), "--plot", false, true}});
     hrgbd::EvalParams p;
     p.max_time_difference = max_dt.getValue();
     p.rpe_delta = delta.getValue();
-    const auto r = hrgbd::evaluateTrajectory(hrgbd::loadTumTrajectory(gt.getValue()),
-                                             hrgbd::loadTumTrajectory(est.getValue()), p);
+    // The estimate must have one pose per time (named by file and line); the ground truth may
+    // repeat one, as TUM's own fr2/desk file does.
+    const auto estimate = hrgbd::loadTumTrajectory(est.getValue(), true);
+    const auto ground_truth = hrgbd::loadTumTrajectory(gt.getValue());
+    hrgbd::EvalResult r;
+    try {
+      r = hrgbd::evaluateTrajectory(ground_truth, estimate, p);
+    } catch (const std::runtime_error& e) {
+      throw std::runtime_error("'" + est.getValue() + "' against '" + gt.getValue() +
+                               "': " + e.what());
+    }
     std::cout << (json.getValue() ? hrgbd::toJson(r) + "\n" : hrgbd::toText(r));
     if (!plot.getValue().empty()) hrgbd::plotEvaluation(r, plot.getValue(), est.getValue());
   });

@@ -6,6 +6,7 @@
 
 #include "rgbd_cli/CommandLine.h"
 #include "rgbd_core/Config.h"
+#include "rgbd_core/JobPaths.h"
 #include "rgbd_io/RawlogWriter.h"
 #include "rgbd_sim/Scene.h"
 #include "rgbd_sim/Simulator.h"
@@ -77,9 +78,15 @@ int main(int argc, char** argv) {
     }
     if (rawlog.getValue().empty() && tum.getValue().empty())
       throw hrgbd::UsageError("give --rawlog and/or --tum");
-    const auto r = hrgbd::sim::simulate(
-        p, {rawlog.getValue(), tum.getValue(),
-            hrgbd::parseEnum<hrgbd::ImageStorage>(images.getValue(), "command line", "images")});
+    const hrgbd::sim::SimOutputs outputs{
+        rawlog.getValue(), tum.getValue(),
+        hrgbd::parseEnum<hrgbd::ImageStorage>(images.getValue(), "command line", "images")};
+    hrgbd::checkJobPaths(
+        {{config.getValue(), "the configuration file (--config)"},
+         {p.motion == "sweep" ? "" : p.motion,
+          motion.isSet() ? "the motion file (--motion)" : "the motion file ([Simulator] motion)"}},
+        hrgbd::sim::writtenFiles(outputs));
+    const auto r = hrgbd::sim::simulate(p, outputs);
     std::cout << summary(p, r);
   });
 }

@@ -1,9 +1,11 @@
 // tum2rawlog TUM_FOLDER OUT.rawlog: converts a TUM RGB-D folder into an MRPT rawlog, with the
 // ground truth written beside it as OUT_groundtruth.txt.
 #include <iostream>
+#include <vector>
 
 #include "rgbd_cli/CommandLine.h"
 #include "rgbd_core/Config.h"
+#include "rgbd_core/JobPaths.h"
 #include "rgbd_io/RawlogSource.h"
 #include "rgbd_io/RawlogWriter.h"
 #include "rgbd_io/TumSource.h"
@@ -21,13 +23,24 @@ int main(int argc, char** argv) {
     if (!cfg.getValue().empty())
       params.loadFromConfigFile(*hrgbd::loadIniFile(cfg.getValue()), "TumSource");
     hrgbd::TumSource src(in.getValue(), params);
+    const auto storage =
+        hrgbd::parseEnum<hrgbd::ImageStorage>(images.getValue(), "command line", "images");
+    const auto gt = hrgbd::groundTruthPathFor(out.getValue());
+    // Nothing is written over the folder's lists, images or ground truth, or the INI file.
+    auto inputs = src.inputs();
+    inputs.push_back({cfg.getValue(), "the configuration file (--config)"});
+    std::vector<hrgbd::JobPath> outputs{{out.getValue(), "the output rawlog", false, true},
+                                        {gt, "the output rawlog's ground truth", false, true}};
+    if (storage != hrgbd::ImageStorage::Inline)
+      outputs.push_back(
+          {hrgbd::imagesFolderFor(out.getValue()), "the output rawlog's image folder", true, true});
+    hrgbd::checkJobPaths(inputs, outputs);
     std::cout << src.describe() << "\n";
-    hrgbd::RawlogWriter writer(out.getValue(), hrgbd::parseEnum<hrgbd::ImageStorage>(
-                                                   images.getValue(), "command line", "images"));
+    hrgbd::RawlogWriter writer(out.getValue(), storage);
     while (auto obs = src.next()) writer.write(*obs);
+    writer.close();
     std::cout << "wrote " << writer.written() << " frames to " << out.getValue() << "\n";
     if (!src.groundTruth().empty()) {
-      const auto gt = hrgbd::groundTruthPathFor(out.getValue());
       hrgbd::saveTumTrajectory(gt, src.groundTruth());
       std::cout << "wrote " << src.groundTruth().size() << " ground-truth poses to " << gt << "\n";
     }

@@ -49,6 +49,7 @@ int main(int argc, char** argv) {
     mrpt::obs::CSensoryFrame sf;
     sf.insert(frame(2.0, false));
     w.write(sf);
+    w.close();
   }
   std::cout << "seeds written to " << dir.string() << "\n";
   return 0;

@@ -2,61 +2,16 @@
 // without running the job; a refused command line exits 2 with "<app>: error:" and writes no
 // output file; a runtime error exits 1. Each refusal has a control: the same command line with a
 // valid value runs and writes its output, so "no file" means "nothing ran".
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
-#include <vector>
 
-#include "TestData.h"
+#include "AppRun.h"
 
 namespace {
 
 namespace fs = std::filesystem;
-
-struct Run {
-  int code = -1;
-  std::string out, err;
-};
-
-std::string slurp(const fs::path& p) {
-  std::ifstream f(p);
-  std::stringstream s;
-  s << f.rdbuf();
-  return s.str();
-}
-
-/** Runs `app` (a name in <build>/apps) with `args` (shell words) and captures its output. A run
- * that should have been refused but starts the job is stopped after two minutes (exit 124). */
-Run runApp(const std::string& app, const std::string& args) {
-  static int runs = 0;  // ctest runs the tests in parallel processes: one folder per run
-  const fs::path dir = hrgbd::test::tempDir("cli_capture_" + std::to_string(getpid()) + "_" +
-                                            std::to_string(runs++));
-  const auto cmd = "timeout 120 " + std::string(HRGBD_BINARY_DIR) + "/apps/" + app + " " + args +
-                   " > " + (dir / "out").string() + " 2> " + (dir / "err").string() +
-                   " < /dev/null";
-  const int status = std::system(cmd.c_str());
-  Run r;
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.out = slurp(dir / "out");
-  r.err = slurp(dir / "err");
-  fs::remove_all(dir);
-  return r;
-}
-
-/** Expects exit 2 and "<app>: error: ..." on stderr, nothing on stdout. */
-Run expectRefused(const std::string& app, const std::string& args) {
-  const auto r = runApp(app, args);
-  EXPECT_EQ(r.code, 2) << app << " " << args << "\n" << r.out << r.err;
-  EXPECT_EQ(r.err.rfind(app + ": error: ", 0), 0u) << app << " " << args << "\n" << r.err;
-  EXPECT_NE(r.err.find(app + " --help"), std::string::npos) << r.err;
-  EXPECT_TRUE(r.out.empty()) << app << " " << args << "\n" << r.out;
-  return r;
-}
+using hrgbd::test::expectRefused;
+using hrgbd::test::runApp;
 
 const std::string kSource = HRGBD_SOURCE_DIR;
 

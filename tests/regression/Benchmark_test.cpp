@@ -3,6 +3,7 @@
 #include "rgbd_bench/Benchmark.h"
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -66,4 +67,22 @@ TEST(Benchmark, RejectsUnknownKeysAndMethods) {
   EXPECT_THROW(hrgbd::runBenchmark(writeIni(dir, "sim_frame = 3\n"), {}, log), hrgbd::ConfigError);
   std::ofstream(dir + "/m.ini") << "[Benchmark]\nmethods = hybrid orb_slam\n";
   EXPECT_THROW(hrgbd::runBenchmark(dir + "/m.ini", {}, log), hrgbd::ConfigError);
+}
+
+TEST(Benchmark, ResultsThatCannotBeWrittenAreAnErrorNamingThem) {
+  const auto dir = hrgbd::test::tempDir("benchmark_unwritable");
+  std::ofstream(dir + "/bench.ini") << "[Benchmark]\nmethods = rgb_only\nsim_scenes =\n"
+                                       "max_frames = 3\nreal_sequences = "
+                                    << HRGBD_SOURCE_DIR << "/rawlogs/desk_near.rawlog\n";
+  std::filesystem::create_directories(dir + "/benchmark/results.md");  // a folder of that name
+  std::ostringstream log;
+  try {
+    hrgbd::runBenchmark(dir + "/bench.ini", {}, log);
+    FAIL() << "expected an error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("cannot write benchmark results '" + dir +
+                                         "/benchmark/results.md': it is a folder"),
+              std::string::npos)
+        << e.what();
+  }
 }

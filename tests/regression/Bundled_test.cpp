@@ -88,6 +88,7 @@ TEST(Bundled, InputWithoutRgbdFramesIsAClearError) {
   {
     hrgbd::RawlogWriter w(dir + "/odo.rawlog");
     w.write(mrpt::obs::CObservationOdometry());
+    w.close();
   }
   hrgbd::PlaybackOptions o;
   o.input = dir + "/odo.rawlog";

@@ -112,3 +112,75 @@ TEST(Evaluate, PublishedEstimatesWithRealTimestampGaps) {
   EXPECT_GT(red, 500);
   EXPECT_GT(blue, 500);
 }
+
+TEST(Evaluate, ParametersThatAreNotPositiveAreRefused) {
+  // The command line refuses them too (AppCommandLine EvalCli test); here the library itself.
+  for (double bad : {0.0, -1.0, std::nan(""), HUGE_VAL}) {
+    hrgbd::EvalParams p;
+    p.rpe_delta = bad;
+    EXPECT_THROW(hrgbd::evaluateTrajectory(curve(), curve(), p), std::invalid_argument) << bad;
+    p = {};
+    p.max_time_difference = bad;
+    EXPECT_THROW(hrgbd::evaluateTrajectory(curve(), curve(), p), std::invalid_argument) << bad;
+  }
+}
+
+TEST(Evaluate, AnEstimateWithTwoPosesAtOneTimeIsAnError) {
+  auto est = curve();
+  est.insert(est.begin() + 50, est[50]);
+  est[51].pose = CPose3D(5, 5, 5, 0, 0, 0);
+  try {
+    hrgbd::evaluateTrajectory(curve(), est);
+    FAIL() << "expected an error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("more than one pose at time stamp 105"), std::string::npos)
+        << e.what();
+  }
+  // The ground truth may repeat a time stamp (TUM's own fr2/desk file does).
+  auto gt = curve();
+  gt.insert(gt.begin() + 50, gt[50]);
+  EXPECT_NEAR(hrgbd::evaluateTrajectory(gt, curve()).ate_rmse, 0, 1e-9);
+}
+
+TEST(Evaluate, CoordinatesBeyondADoublesMetresAreAnErrorNotAWrongFigure) {
+  auto far = curve();
+  for (auto& p : far) p.pose.x_incr(1e150);  // 1e150 + 1 == 1e150: the shape is gone
+  for (const auto& [gt, est] : {std::pair{curve(), far}, std::pair{far, far}}) {
+    try {
+      const auto r = hrgbd::evaluateTrajectory(gt, est);
+      FAIL() << "expected an error, got ATE " << r.ate_rmse;
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find("1e+150 m"), std::string::npos) << e.what();
+    }
+  }
+  // Large but representable offsets (UTM coordinates) give the same figures as without.
+  auto offset = [](hrgbd::Trajectory t, double d) {
+    for (auto& p : t) p.pose.x_incr(d), p.pose.y_incr(d);
+    return t;
+  };
+  auto noisy = curve();
+  for (std::size_t i = 0; i < noisy.size(); ++i) noisy[i].pose.z_incr(0.01 * std::sin(i));
+  const auto ref = hrgbd::evaluateTrajectory(curve(), noisy);
+  const auto utm = hrgbd::evaluateTrajectory(offset(curve(), 5e6), offset(noisy, 5e6));
+  EXPECT_NEAR(utm.ate_rmse, ref.ate_rmse, 1e-7);
+  EXPECT_NEAR(utm.ate_mean_unaligned, ref.ate_mean_unaligned, 1e-7);
+  EXPECT_NEAR(utm.rpe_trans, ref.rpe_trans, 1e-7);
+}
+
+TEST(Evaluate, NoRpeIntervalIsSaidSoAndJsonStaysValid) {
+  auto sparse = curve();
+  for (std::size_t i = 0; i < sparse.size(); ++i) sparse[i].t = 100.0 + 3.0 * i;  // gaps > 2 s
+  const auto r = hrgbd::evaluateTrajectory(sparse, sparse);
+  EXPECT_EQ(r.rpe_pairs, 0u);
+  const auto json = hrgbd::toJson(r);
+  EXPECT_NE(json.find("\"rpe_trans\": null, \"rpe_rot\": null"), std::string::npos) << json;
+  EXPECT_NE(hrgbd::toText(r).find("RPE                   none"), std::string::npos);
+  // Whatever the figures, no inf or nan token reaches the JSON.
+  auto bad = hrgbd::evaluateTrajectory(curve(), curve());
+  bad.ate_rmse = HUGE_VAL;
+  bad.rpe_rot = std::nan("");
+  const auto text = hrgbd::toJson(bad);
+  EXPECT_NE(text.find("\"ate_rmse\": null"), std::string::npos) << text;
+  EXPECT_NE(text.find("\"rpe_rot\": null"), std::string::npos) << text;
+  for (const auto* token : {"inf", "nan"}) EXPECT_EQ(text.find(token), std::string::npos) << text;
+}

@@ -1,11 +1,13 @@
 // The concrete frame sinks: what each writes or keeps for a given sequence of results.
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
 #include "TestData.h"
 #include "rgbd_app/MapSinks.h"
 #include "rgbd_app/TextSinks.h"
+#include "rgbd_core/Timestamp.h"
 #include "rgbd_io/RawlogSource.h"
 
 namespace {
@@ -27,43 +29,113 @@ hrgbd::FrameResult result(double t, double x, hrgbd::FrameResult::Status s) {
   return r;
 }
 
+/** A copy of `obs` with the time stamp `text` (seconds). */
+mrpt::obs::CObservation3DRangeScan stamped(const mrpt::obs::CObservation3DRangeScan& obs,
+                                           const std::string& text) {
+  auto copy = obs;
+  copy.timestamp = hrgbd::parseFrameTime(text);
+  return copy;
+}
+
+/** Entries in `dir`. */
+std::size_t files(const std::string& dir) {
+  const std::filesystem::directory_iterator it(dir);
+  return static_cast<std::size_t>(std::distance(begin(it), end(it)));
+}
+
 constexpr auto kOk = hrgbd::FrameResult::Status::Ok;
 constexpr auto kLost = hrgbd::FrameResult::Status::TooFewMatches;
 
 }  // namespace
 
-TEST(TrajectorySink, WritesAndFlushesOneTumLinePerFrame) {
+TEST(TrajectorySink, WritesOneTumLinePerFrameWithTheFramesExactTimeStamp) {
   const auto dir = hrgbd::test::tempDir("trajectory_sink");
   hrgbd::RawlogSource src(kDesk);
-  const auto obs = src.next();
+  const auto first = stamped(*src.next(), "1.5");
+  const auto second = stamped(*src.next(), "1700000000.1234567");  // beyond a double's 100 ns
   hrgbd::TrajectorySink sink(dir + "/t.txt", "# comment");
-  sink.add(*obs, result(1.5, 0.25, kOk));
-  sink.add(*obs, result(2.5, 0.5, kLost));
-  // Readable while the sink is open: each line is flushed as written.
-  const auto text = lines(dir + "/t.txt");
-  ASSERT_EQ(text.size(), 3u);
-  EXPECT_EQ(text[0], "# comment");
-  EXPECT_EQ(text[2], "2.500000000 0.500000 0.000000 0.000000 0.000000 0.000000 0.000000 1.000000");
+  sink.add(first, result(99, 0.25, kOk));  // the line's time is the frame's, not r.t
+  sink.add(second, result(99, 0.5, kLost));
+  // Under its name only once complete: a run that stops here leaves no trajectory.
+  EXPECT_FALSE(std::filesystem::exists(dir + "/t.txt"));
   ASSERT_EQ(sink.trajectory().size(), 2u);
+  EXPECT_EQ(sink.trajectory()[0].t, 1.5);
   sink.reset();
   EXPECT_TRUE(sink.trajectory().empty());
-  EXPECT_EQ(lines(dir + "/t.txt").size(), 3u);  // the file keeps what it has
+  std::ostringstream log;
+  sink.finish(log);
+  EXPECT_EQ(log.str(), "trajectory: " + dir + "/t.txt\n");
+  const auto text = lines(dir + "/t.txt");  // the file keeps what it has
+  ASSERT_EQ(text.size(), 3u);
+  EXPECT_EQ(text[0], "# comment");
+  EXPECT_EQ(text[1], "1.500000000 0.250000 0.000000 0.000000 0.000000 0.000000 0.000000 1.000000");
+  EXPECT_EQ(text[2].rfind("1700000000.123456700 0.500000 ", 0), 0u) << text[2];
+  EXPECT_EQ(files(dir), 1u);  // no temporary file left
   EXPECT_THROW(hrgbd::TrajectorySink(dir + "/no/such/folder/t.txt", "#"), std::runtime_error);
 }
 
-TEST(CsvSink, OneFlushedRowPerFrameWithTheHeadersColumns) {
-  const auto dir = hrgbd::test::tempDir("csv_sink");
+TEST(TrajectorySink, ARunThatFailsLeavesNoTrajectoryAndKeepsThePreviousOne) {
+  const auto dir = hrgbd::test::tempDir("trajectory_sink_fail");
   hrgbd::RawlogSource src(kDesk);
   const auto obs = src.next();
+  std::ofstream(dir + "/t.txt") << "# previous run\n";
+  {
+    hrgbd::TrajectorySink sink(dir + "/t.txt", "# comment");
+    sink.add(*obs, result(1, 0, kOk));
+  }  // destroyed without finish(), as when the frame loop throws
+  EXPECT_EQ(lines(dir + "/t.txt"), std::vector<std::string>{"# previous run"});
+  EXPECT_EQ(files(dir), 1u);
+  hrgbd::CsvSink csv(dir + "/f.csv");
+  csv.add(*obs, result(1, 0, kOk));
+  EXPECT_FALSE(std::filesystem::exists(dir + "/f.csv"));
+}
+
+TEST(TrajectorySink, WriteFailuresAreErrorsNamingTheFile) {
+  hrgbd::RawlogSource src(kDesk);
+  const auto obs = src.next();
+  std::ostringstream log;
+  try {  // /dev/full is written in place (not renamed over) and fails on the first flush
+    hrgbd::TrajectorySink sink("/dev/full", "#");
+    sink.add(*obs, result(1, 0, kOk));
+    sink.finish(log);
+    FAIL() << "writing /dev/full must fail";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("'/dev/full'"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(hrgbd::CsvSink("/dev/full"), std::runtime_error);
+  hrgbd::TrajectorySink null_sink("/dev/null", "#");  // a device that takes the data is fine
+  null_sink.add(*obs, result(1, 0, kOk));
+  EXPECT_NO_THROW(null_sink.finish(log));
+  EXPECT_TRUE(std::filesystem::is_character_file("/dev/null"));
+}
+
+TEST(TrajectorySink, SaveWritesTheKeptPosesExactly) {
+  const auto dir = hrgbd::test::tempDir("trajectory_sink_save");
+  hrgbd::RawlogSource src(kDesk);
+  hrgbd::TrajectorySink sink;
+  sink.add(stamped(*src.next(), "1234567890.0000001"), result(0, 0.25, kOk));
+  sink.save(dir + "/s.txt", "# saved");
+  const auto text = lines(dir + "/s.txt");
+  ASSERT_EQ(text.size(), 2u);
+  EXPECT_EQ(text[1].rfind("1234567890.000000100 0.250000 ", 0), 0u) << text[1];
+  EXPECT_THROW(sink.save("/dev/full", "#"), std::runtime_error);
+}
+
+TEST(CsvSink, OneRowPerFrameWithTheHeadersColumns) {
+  const auto dir = hrgbd::test::tempDir("csv_sink");
+  hrgbd::RawlogSource src(kDesk);
   hrgbd::CsvSink sink(dir + "/f.csv");
   auto r = result(1.5, 0.25, kLost);
   r.detail = "only 3 matches";
-  sink.add(*obs, r);
+  sink.add(stamped(*src.next(), "1.5"), r);
+  std::ostringstream log;
+  sink.finish(log);
+  EXPECT_EQ(log.str(), "CSV: " + dir + "/f.csv\n");
   const auto text = lines(dir + "/f.csv");
   ASSERT_EQ(text.size(), 2u);
   const auto commas = [](const std::string& s) { return std::count(s.begin(), s.end(), ','); };
   EXPECT_EQ(commas(text[0]), commas(text[1]));
-  EXPECT_EQ(text[1].rfind("1.500000,too_few_matches,photometric,", 0), 0u) << text[1];
+  EXPECT_EQ(text[1].rfind("1.500000000,too_few_matches,photometric,", 0), 0u) << text[1];
   EXPECT_NE(text[1].find("\"only 3 matches\""), std::string::npos);
 }
 
@@ -103,4 +175,33 @@ TEST(ProgressSink, RedrawsOneLineAndEndsIt) {
   EXPECT_EQ(out.str().back(), '\n');
   EXPECT_NE(out.str().rfind("\r  frame      2  registered      1"), std::string::npos) << out.str();
   EXPECT_TRUE(log.str().empty());
+}
+
+TEST(MapSinks, WriteFailuresAreErrorsAndUnfinishedFilesDoNotAppear) {
+  const auto dir = hrgbd::test::tempDir("map_sinks_fail");
+  hrgbd::RawlogSource src(kDesk);
+  const auto obs = src.next();
+  std::ostringstream log;
+  for (const hrgbd::MapFiles files : {hrgbd::MapFiles{"/dev/full", ""}, {"", "/dev/full"}}) {
+    hrgbd::ColouredMapSink map(hrgbd::MapParams(), files);
+    map.add(*obs, result(1, 0, kOk));
+    EXPECT_THROW(map.finish(log), std::runtime_error) << files.ply << files.scene;
+  }
+  hrgbd::SimplemapSink simplemap("/dev/full");
+  simplemap.add(*obs, result(1, 0, kOk));
+  EXPECT_THROW(simplemap.finish(log), std::runtime_error);
+  // A rawlog with external images beside it cannot be a device.
+  EXPECT_THROW(hrgbd::PosedRawlogSink("/dev/null"), std::runtime_error);
+  EXPECT_FALSE(std::filesystem::exists("/dev/null_Images"));
+  {
+    hrgbd::PosedRawlogSink rawlog(dir + "/p.rawlog");
+    rawlog.add(*obs, result(1, 0, kOk));
+  }  // not finished
+  EXPECT_FALSE(std::filesystem::exists(dir + "/p.rawlog"));
+  hrgbd::PosedRawlogSink rawlog(dir + "/q.rawlog");
+  rawlog.add(*obs, result(1, 0, kOk));
+  rawlog.finish(log);
+  hrgbd::RawlogSource back(dir + "/q.rawlog");
+  ASSERT_NE(back.next(), nullptr);
+  EXPECT_EQ(back.next(), nullptr);
 }

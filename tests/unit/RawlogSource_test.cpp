@@ -4,6 +4,7 @@
 #include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/obs/CSensoryFrame.h>
 
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 
@@ -31,6 +32,7 @@ void writeMixedRawlog(const std::string& path, hrgbd::ImageStorage images) {
   sf.insert(mrpt::obs::CObservationOdometry::Create());
   w.write(sf);
   w.write(*frame(4.0, 8000));
+  w.close();
 }
 
 std::vector<double> readAll(hrgbd::RawlogSource& src) {
@@ -150,8 +152,53 @@ TEST(RawlogSource, RawlogWithoutRgbdFramesCountsWhatItSkipped) {
   {
     hrgbd::RawlogWriter w(dir + "/odo.rawlog");
     for (int i = 0; i < 3; ++i) w.write(mrpt::obs::CObservationOdometry());
+    w.close();
   }
   hrgbd::RawlogSource src(dir + "/odo.rawlog");
   EXPECT_EQ(src.next(), nullptr);
   EXPECT_EQ(src.stats().skipped_objects, 3u);
+}
+
+TEST(RawlogSource, FramesWithoutAUsableTimeStampAreAnErrorNamingTheEntry) {
+  // Unset (MRPT's 1601), before 1970 (MRPT's toDouble wraps it to 1.8e12 s), beyond 1e11 s.
+  // Any 64-bit count, as a corrupt rawlog may hold, is handled without overflow.
+  for (const auto& stamp : {mrpt::Clock::time_point(), mrpt::Clock::fromDouble(-1),
+                            mrpt::Clock::time_point(mrpt::Clock::duration(INT64_MAX)),
+                            mrpt::Clock::time_point(mrpt::Clock::duration(INT64_MIN))}) {
+    const auto dir = hrgbd::test::tempDir("rawlog_stamp");
+    {
+      hrgbd::RawlogWriter w(dir + "/s.rawlog");
+      w.write(*frame(1.0, 5000));
+      auto bad = frame(2.0, 5000);
+      bad->timestamp = stamp;
+      w.write(*bad);
+      w.close();
+    }
+    hrgbd::RawlogSource src(dir + "/s.rawlog");
+    ASSERT_NE(src.next(), nullptr);
+    try {
+      src.next();
+      FAIL() << "expected an exception";
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find("s.rawlog' entry 1: "), std::string::npos) << e.what();
+    }
+  }
+}
+
+TEST(RawlogWriter, TheRawlogAppearsOnlyWhenClosedAndWriteFailuresAreErrors) {
+  const auto dir = hrgbd::test::tempDir("rawlog_writer");
+  {
+    hrgbd::RawlogWriter w(dir + "/a.rawlog");
+    w.write(*frame(1.0, 5000));
+  }  // not closed: as when the run fails half-way
+  EXPECT_FALSE(std::filesystem::exists(dir + "/a.rawlog"));
+  try {
+    hrgbd::RawlogWriter w("/dev/full");
+    w.write(*frame(1.0, 5000));
+    w.close();
+    FAIL() << "writing /dev/full must fail";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("cannot write rawlog '/dev/full'"), std::string::npos)
+        << e.what();
+  }
 }

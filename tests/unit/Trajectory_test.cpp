@@ -69,3 +69,37 @@ TEST(Trajectory, OpticalAndMrptConventionsAgree) {
   const auto I = coincide + hrgbd::mrptFrameInOptical();
   EXPECT_NEAR(I.asVectorVal().norm(), 0, 1e-12);
 }
+
+TEST(Trajectory, TimeStampsAreWrittenExactly) {
+  // Any finite stamp of a ground truth reads back as itself, not rounded to 9 decimals.
+  const auto dir = hrgbd::test::tempDir("traj_stamps");
+  const hrgbd::Trajectory t{{-1.0, CPose3D()},
+                            {1e-10, CPose3D()},
+                            {2.0000000001, CPose3D()},
+                            {1305031453.3596, CPose3D()},
+                            {1e308, CPose3D()}};
+  hrgbd::saveTumTrajectory(dir + "/t.txt", t);
+  const auto r = hrgbd::loadTumTrajectory(dir + "/t.txt");
+  ASSERT_EQ(r.size(), t.size());
+  for (std::size_t i = 0; i < t.size(); ++i) EXPECT_EQ(r[i].t, t[i].t) << i;
+  std::ifstream in(dir + "/t.txt");
+  std::string header, line;
+  std::getline(in, header);
+  for (int i = 0; i < 4; ++i) std::getline(in, line);
+  EXPECT_EQ(line.rfind("1305031453.3596 ", 0), 0u) << line;  // as TUM writes it
+  EXPECT_THROW(hrgbd::saveTumTrajectory("/dev/full", t), std::runtime_error);
+}
+
+TEST(Trajectory, RepeatedTimeStampsAreAnErrorWhenAsked) {
+  const auto dir = hrgbd::test::tempDir("traj_repeat");
+  std::ofstream(dir + "/t.txt") << "# h\n1 0 0 0 0 0 0 1\n2 0 0 0 0 0 0 1\n1.0 1 0 0 0 0 0 1\n";
+  EXPECT_EQ(hrgbd::loadTumTrajectory(dir + "/t.txt").size(), 3u);
+  try {
+    hrgbd::loadTumTrajectory(dir + "/t.txt", true);
+    FAIL() << "expected an exception";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("t.txt' line 4: time stamp 1 was already given on line 2"),
+              std::string::npos)
+        << e.what();
+  }
+}

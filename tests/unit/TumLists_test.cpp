@@ -1,6 +1,10 @@
 #include "rgbd_io/TumLists.h"
 
+#include <utility>
+#include <vector>
+
 #include "TestData.h"
+#include "rgbd_core/Timestamp.h"
 
 TEST(TumLists, ParsesEntriesAndSkipsComments) {
   const auto v = hrgbd::parseTumListText(
@@ -22,6 +26,32 @@ TEST(TumLists, OutOfOrderAndDuplicateStampsAreErrors) {
   }
   EXPECT_THROW(hrgbd::parseTumListText("1.0\n", "rgb.txt"), std::runtime_error);
   EXPECT_THROW(hrgbd::parseTumListText("nan a.png\n", "rgb.txt"), std::runtime_error);
+}
+
+TEST(TumLists, StampsAreKeptExactlyOrRefusedNamingTheLine) {
+  const auto v =
+      hrgbd::parseTumListText("1700000000.1234567 a.png\n1700000000.1234568 b.png\n", "rgb.txt");
+  ASSERT_EQ(v.size(), 2u);  // 100 ns apart: one double step is 238 ns there
+  EXPECT_EQ(hrgbd::formatFrameTime(v[0].stamp), "1700000000.123456700");
+  EXPECT_EQ(hrgbd::formatFrameTime(v[1].stamp), "1700000000.123456800");
+  for (const auto& [stamp, why] :
+       std::vector<std::pair<std::string, std::string>>{{"-1", "negative"},
+                                                        {"1e308", "not below 1e11 s"},
+                                                        {"1700000000123456789", "not below 1e11 s"},
+                                                        {"1.00000002", "finer than 100 ns"}}) {
+    try {
+      hrgbd::parseTumListText("# list\n1 a.png\n" + stamp + " b.png\n", "rgb.txt");
+      FAIL() << "expected an exception for " << stamp;
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find("'rgb.txt' line 3: time stamp " + stamp + " "),
+                std::string::npos)
+          << e.what();
+      EXPECT_NE(std::string(e.what()).find(why), std::string::npos) << e.what();
+    }
+  }
+  // Two stamps closer than 100 ns would be one time: refused, not merged.
+  EXPECT_THROW(hrgbd::parseTumListText("1.00000001 a.png\n1.00000002 b.png\n", "rgb.txt"),
+               std::runtime_error);
 }
 
 TEST(TumLists, AssociationPairsNearestWithinLimit) {

@@ -8,6 +8,7 @@
 #include <ostream>
 #include <stdexcept>
 
+#include "rgbd_core/GzOutput.h"
 #include "rgbd_core/Trajectory.h"
 
 namespace hrgbd {
@@ -49,7 +50,9 @@ void PosedRawlogSink::add(const mrpt::obs::CObservation3DRangeScan& obs, const F
 }
 
 void PosedRawlogSink::finish(std::ostream& log) {
-  m_writer.reset();  // closes (flushes) the gzip stream
+  if (!m_writer) return;
+  m_writer->close();
+  m_writer.reset();
   log << "rawlog with poses: " << m_path << "\n";
 }
 
@@ -70,8 +73,7 @@ void SimplemapSink::add(const mrpt::obs::CObservation3DRangeScan& obs, const Fra
 }
 
 void SimplemapSink::finish(std::ostream& log) {
-  if (!m_simplemap.saveToFile(m_path))
-    throw std::runtime_error("cannot write simplemap '" + m_path + "'");
+  saveCompressed(m_simplemap, m_path, "simplemap");
   log << "simplemap: " << m_path << "\n";
 }
 

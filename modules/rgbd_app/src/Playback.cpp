@@ -12,8 +12,10 @@
 #include "rgbd_app/TextSinks.h"
 #include "rgbd_app/makeOdometry.h"
 #include "rgbd_core/Config.h"
+#include "rgbd_core/JobPaths.h"
 #include "rgbd_eval/EvalPlot.h"
 #include "rgbd_eval/Evaluate.h"
+#include "rgbd_io/RawlogWriter.h"
 #include "rgbd_io/openFrameSource.h"
 
 namespace hrgbd {
@@ -25,6 +27,7 @@ struct PlaybackJob {
   OdometryParams odometry;
   std::string input, trajectory, csv;
   MapOutputPaths outputs;
+  std::vector<JobPath> written;  //!< every output file and folder, named by option or key
 };
 
 PlaybackJob resolveJob(const PlaybackOptions& opt) {
@@ -45,6 +48,26 @@ PlaybackJob resolveJob(const PlaybackOptions& opt) {
   job.outputs = {pick(opt.output_rawlog, pb.outputs.output_rawlog),
                  pick(opt.simplemap, pb.outputs.simplemap), pick(opt.map_ply, pb.outputs.map_ply),
                  pick(opt.map_scene, pb.outputs.map_scene)};
+  // Each output named by the option or key that gave it, for checkJobPaths()'s messages.
+  auto output = [&](const std::string& cli, const std::string& ini, const std::string& option,
+                    const std::string& key) {
+    return cli.empty() ? JobPath{ini, "[Playback] " + key} : JobPath{cli, option, false, true};
+  };
+  job.written = {
+      output(opt.trajectory, pb.trajectory, "--trajectory", "trajectory"),
+      output(opt.csv, pb.csv, "--csv", "csv"),
+      output(opt.output_rawlog, pb.outputs.output_rawlog, "--output-rawlog", "output_rawlog"),
+      output(opt.simplemap, pb.outputs.simplemap, "--simplemap", "simplemap"),
+      output(opt.map_ply, pb.outputs.map_ply, "--map-ply", "map_ply"),
+      output(opt.map_scene, pb.outputs.map_scene, "--map-scene", "map_scene"),
+      {opt.plot, "--plot", false, true}};
+  if (!job.outputs.output_rawlog.empty()) {
+    auto images = job.written[2];  // its colour images, PNG files
+    images.path = imagesFolderFor(images.path);
+    images.name += "'s image folder";
+    images.folder = true;
+    job.written.push_back(images);
+  }
   return job;
 }
 
@@ -121,18 +144,28 @@ PlaybackSinks makeSinks(const PlaybackJob& job, const FrameSource& source, bool 
   return s;
 }
 
-/** Evaluation against the source's ground truth, when it has one; failures are logged. */
+/** Evaluation against the source's ground truth, when it has one; an evaluation that cannot be
+ * made is logged, a plot that cannot be written is an error. */
 void evaluate(const FrameSource& source, const Trajectory& estimate, const std::string& plot,
               const std::string& title, PlaybackSummary& sum, std::ostream& log) {
   const auto gt = source.groundTruth();
-  if (gt.empty() || estimate.size() < 3) return;
+  if (gt.empty() || estimate.size() < 3) {
+    if (!plot.empty())
+      log << "no plot: " << (gt.empty() ? "the input has no ground truth" : "fewer than 3 poses")
+          << "\n";
+    return;
+  }
   try {
     sum.eval = evaluateTrajectory(gt, estimate);
     sum.evaluated = true;
-    log << "evaluation against ground truth:\n" << toText(sum.eval);
-    if (!plot.empty()) plotEvaluation(sum.eval, plot, title);
   } catch (const std::exception& ex) {
     log << "evaluation skipped: " << ex.what() << "\n";
+    return;
+  }
+  log << "evaluation against ground truth:\n" << toText(sum.eval);
+  if (!plot.empty()) {
+    plotEvaluation(sum.eval, plot, title);
+    log << "plot: " << plot << "\n";
   }
 }
 
@@ -143,6 +176,10 @@ PlaybackSummary runPlayback(const PlaybackOptions& opt, std::ostream& log) {
   auto odometry = makeOdometry(job.odometry, *job.cfg);
   if (job.input.empty()) throw ConfigError("no input: give --input or [Playback] input");
   auto source = openFrameSource(job.input, *job.cfg);
+  // No output may overwrite an input or another output; checked before anything is written.
+  auto inputs = source->inputs();
+  inputs.push_back({opt.config, "the configuration file (--config)"});
+  checkJobPaths(inputs, job.written);
   log << "input: " << source->describe() << "\nmethod: " << toString(job.odometry.method) << "\n";
 
   const auto sinks = makeSinks(job, *source, opt.progress && isatty(STDERR_FILENO));

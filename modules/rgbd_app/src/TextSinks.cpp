@@ -4,38 +4,63 @@
 #include <ostream>
 #include <stdexcept>
 
+#include "rgbd_core/Timestamp.h"
+
 namespace hrgbd {
 
 TrajectorySink::TrajectorySink(const std::string& path, const std::string& comment)
-    : m_path(path), m_file(path) {
-  if (!m_file) throw std::runtime_error("cannot write trajectory '" + path + "'");
-  m_file << comment << "\n";
+    : m_file(std::make_unique<StreamOutput>(path, "trajectory")) {
+  m_file->stream() << comment << "\n";
+  m_file->flush();
 }
 
-void TrajectorySink::add(const mrpt::obs::CObservation3DRangeScan&, const FrameResult& r) {
-  m_trajectory.push_back({r.t, r.pose});
-  if (!m_file.is_open()) return;
-  writeTumLine(m_file, m_trajectory.back());
-  m_file.flush();
+void TrajectorySink::add(const mrpt::obs::CObservation3DRangeScan& obs, const FrameResult& r) {
+  m_trajectory.push_back({frameSeconds(obs.timestamp), r.pose});
+  m_times.push_back(formatFrameTime(obs.timestamp));
+  if (!m_file) return;
+  writeTumLine(m_file->stream(), m_times.back(), r.pose);
+  m_file->flush();
 }
 
 void TrajectorySink::finish(std::ostream& log) {
-  if (m_file.is_open()) log << "trajectory: " << m_path << "\n";
+  if (!m_file) return;
+  m_file->commit();
+  log << "trajectory: " << m_file->path() << "\n";
+  m_file.reset();
 }
 
-CsvSink::CsvSink(const std::string& path) : m_file(path) {
-  if (!m_file) throw std::runtime_error("cannot write CSV '" + path + "'");
-  m_file << "timestamp,status,path,orb_features,features,matches,inliers,scale_m,ms_prepare,"
-            "ms_features,ms_matching,ms_estimation,ms_refine,ms_total,detail\n";
+void TrajectorySink::reset() {
+  m_trajectory.clear();
+  m_times.clear();
 }
 
-void CsvSink::add(const mrpt::obs::CObservation3DRangeScan&, const FrameResult& r) {
-  m_file << std::fixed << std::setprecision(6) << r.t << "," << toString(r.status) << "," << r.path
-         << "," << r.orb_features << "," << r.features << "," << r.matches << "," << r.inliers
-         << "," << std::setprecision(5) << r.scale << "," << std::setprecision(3) << r.ms.prepare
-         << "," << r.ms.features << "," << r.ms.matching << "," << r.ms.estimation << ","
-         << r.ms.refine << "," << r.ms.total << ",\"" << r.detail << "\"\n";
+void TrajectorySink::save(const std::string& path, const std::string& comment) const {
+  StreamOutput out(path, "trajectory");
+  out.stream() << comment << "\n";
+  for (std::size_t i = 0; i < m_trajectory.size(); ++i)
+    writeTumLine(out.stream(), m_times[i], m_trajectory[i].pose);
+  out.commit();
+}
+
+CsvSink::CsvSink(const std::string& path) : m_file(path, "CSV") {
+  m_file.stream() << "timestamp,status,path,orb_features,features,matches,inliers,scale_m,"
+                     "ms_prepare,ms_features,ms_matching,ms_estimation,ms_refine,ms_total,detail\n";
   m_file.flush();
+}
+
+void CsvSink::add(const mrpt::obs::CObservation3DRangeScan& obs, const FrameResult& r) {
+  m_file.stream() << formatFrameTime(obs.timestamp) << "," << toString(r.status) << "," << r.path
+                  << "," << r.orb_features << "," << r.features << "," << r.matches << ","
+                  << r.inliers << "," << std::fixed << std::setprecision(5) << r.scale << ","
+                  << std::setprecision(3) << r.ms.prepare << "," << r.ms.features << ","
+                  << r.ms.matching << "," << r.ms.estimation << "," << r.ms.refine << ","
+                  << r.ms.total << ",\"" << r.detail << "\"\n";
+  m_file.flush();
+}
+
+void CsvSink::finish(std::ostream& log) {
+  m_file.commit();
+  log << "CSV: " << m_file.path() << "\n";
 }
 
 void ProgressSink::add(const mrpt::obs::CObservation3DRangeScan&, const FrameResult& r) {

@@ -14,6 +14,9 @@
 
 #include "rgbd_app/AppConfig.h"
 #include "rgbd_core/Config.h"
+#include "rgbd_core/JobPaths.h"
+#include "rgbd_core/OutputFile.h"
+#include "rgbd_io/RawlogSource.h"
 #include "rgbd_sim/Scene.h"
 #include "rgbd_sim/Simulator.h"
 
@@ -177,12 +180,41 @@ std::vector<BenchRun> runAll(const std::vector<BenchSequence>& sequences, const 
   return runs;
 }
 
+/** <output_folder>/<name>. */
+std::string results(const BenchmarkParams& p, const std::string& name) {
+  return (fs::path(p.output_folder) / name).string();
+}
+
+/** Refuses results files that would overwrite an input: the configuration file, a motion file,
+ * a real sequence's rawlog, lists or ground truth (checkJobPaths()). Each run's trajectory and
+ * CSV are checked by its playback. */
+void checkResultPaths(const BenchmarkParams& p, const std::string& config_file,
+                      const std::vector<std::string>& extra) {
+  std::vector<JobPath> inputs{{config_file, "the configuration file (--config)"}};
+  for (const auto& m : p.sim_motions)
+    if (m != "sweep") inputs.push_back({m, "[Benchmark] sim_motions file"});
+  auto sequence = [&](const std::string& path, const std::string& name) {
+    if (fs::is_directory(path)) {
+      for (const auto* list : {"rgb.txt", "depth.txt", "groundtruth.txt"})
+        inputs.push_back({(fs::path(path) / list).string(), name + "'s " + list});
+    } else {
+      inputs.push_back({path, name});
+      inputs.push_back({groundTruthPathFor(path), name + "'s ground truth"});
+    }
+  };
+  for (const auto& r : p.real_sequences) sequence(r, "[Benchmark] real_sequences entry");
+  for (const auto& e : extra) sequence(e, "the sequence given on the command line");
+  checkJobPaths(inputs, {{results(p, "results.md"), "[Benchmark] output_folder's results.md"},
+                         {results(p, "results.csv"), "[Benchmark] output_folder's results.csv"}});
+}
+
 }  // namespace
 
 BenchmarkReport runBenchmark(const std::string& config_file, const std::vector<std::string>& extra,
                              std::ostream& log) {
   const auto start = std::chrono::steady_clock::now();
   const auto p = loadBenchmarkParams(config_file);
+  checkResultPaths(p, config_file, extra);
   BenchmarkReport report;
   report.config_file = config_file;
   report.methods = p.methods;
@@ -192,10 +224,13 @@ BenchmarkReport runBenchmark(const std::string& config_file, const std::vector<s
   report.runs = runAll(report.sequences, p, config_file, log);
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  const auto results = fs::path(p.output_folder) / "results.md";
-  std::ofstream(results) << toMarkdown(report);
-  std::ofstream(fs::path(p.output_folder) / "results.csv") << toCsv(report);
-  log << "results: " << results.string() << "\n";
+  StreamOutput markdown(results(p, "results.md"), "benchmark results");
+  markdown.stream() << toMarkdown(report);
+  markdown.commit();
+  StreamOutput csv(results(p, "results.csv"), "benchmark results");
+  csv.stream() << toCsv(report);
+  csv.commit();
+  log << "results: " << markdown.path() << "\n";
   return report;
 }
 

@@ -22,7 +22,16 @@ const BenchRun* findRun(const BenchmarkReport& r, const std::string& seq, const 
 
 std::optional<double> evaluated(const BenchRun& r, double EvalResult::*field) {
   if (!r.error.empty() || !r.summary.evaluated) return std::nullopt;
+  const bool rpe = field == &EvalResult::rpe_trans || field == &EvalResult::rpe_rot;
+  if (rpe && r.summary.eval.rpe_pairs == 0) return std::nullopt;  // no interval without a gap
   return r.summary.eval.*field;
+}
+
+/** `text` as one CSV field: quoted, inner quotes doubled. */
+std::string csvField(const std::string& text) {
+  std::string out = "\"";
+  for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return out + "\"";
 }
 
 std::string fmt(std::optional<double> v, int precision) {
@@ -243,7 +252,8 @@ std::string toCsv(const BenchmarkReport& r) {
     out << run.sequence << "," << run.method << "," << s.frames << "," << s.registered << ","
         << v(&EvalResult::ate_mean_unaligned) << "," << v(&EvalResult::ate_rmse) << ","
         << v(&EvalResult::rpe_trans) << "," << v(&EvalResult::rpe_rot) << "," << std::fixed
-        << std::setprecision(3) << s.median_ms << "," << s.p95_ms << ",\"" << run.error << "\"\n";
+        << std::setprecision(3) << s.median_ms << "," << s.p95_ms << "," << csvField(run.error)
+        << "\n";
   }
   return out.str();
 }

@@ -5,6 +5,8 @@
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
 
+#include "rgbd_core/Timestamp.h"
+
 namespace hrgbd {
 
 mrpt::obs::CObservation3DRangeScan::Ptr makeRgbdObservation(const cv::Mat& bgr,
@@ -12,6 +14,12 @@ mrpt::obs::CObservation3DRangeScan::Ptr makeRgbdObservation(const cv::Mat& bgr,
                                                             double depth_unit,
                                                             const mrpt::img::TCamera& cam, double t,
                                                             const std::string& label) {
+  return makeRgbdObservation(bgr, depth_raw, depth_unit, cam, frameTimeFromSeconds(t), label);
+}
+
+mrpt::obs::CObservation3DRangeScan::Ptr makeRgbdObservation(
+    const cv::Mat& bgr, const cv::Mat& depth_raw, double depth_unit, const mrpt::img::TCamera& cam,
+    mrpt::Clock::time_point t, const std::string& label) {
   if (depth_raw.type() != CV_16UC1) throw std::invalid_argument("depth image must be 16-bit");
   if (!bgr.empty() && bgr.type() != CV_8UC3)
     throw std::invalid_argument("colour image must be 8-bit, 3 channels");
@@ -24,7 +32,7 @@ mrpt::obs::CObservation3DRangeScan::Ptr makeRgbdObservation(const cv::Mat& bgr,
 
   auto obs = mrpt::obs::CObservation3DRangeScan::Create();
   obs->sensorLabel = label;
-  obs->timestamp = mrpt::Clock::fromDouble(t);
+  obs->timestamp = t;
   obs->range_is_depth = true;
   obs->hasRangeImage = true;
   obs->rangeUnits = static_cast<float>(depth_unit);
@@ -70,8 +78,6 @@ cv::Mat colourBgr(const mrpt::obs::CObservation3DRangeScan& obs) {
   return out;
 }
 
-double timestampSeconds(const mrpt::obs::CObservation& obs) {
-  return mrpt::Clock::toDouble(obs.timestamp);
-}
+double timestampSeconds(const mrpt::obs::CObservation& obs) { return frameSeconds(obs.timestamp); }
 
 }  // namespace hrgbd

@@ -7,15 +7,20 @@
 #include <cmath>
 #include <fstream>
 #include <iomanip>
+#include <map>
 #include <sstream>
 #include <stdexcept>
 
+#include "rgbd_core/OutputFile.h"
+#include "rgbd_core/Timestamp.h"
+
 namespace hrgbd {
 
-Trajectory loadTumTrajectory(const std::string& path) {
+Trajectory loadTumTrajectory(const std::string& path, bool unique_times) {
   std::ifstream in(path);
   if (!in) throw std::runtime_error("cannot open trajectory file '" + path + "'");
   Trajectory traj;
+  std::map<double, int> lines;  // time stamp -> line, with unique_times
   std::string line;
   for (int line_no = 1; std::getline(in, line); ++line_no) {
     const auto first = line.find_first_not_of(" \t\r");
@@ -34,26 +39,35 @@ Trajectory loadTumTrajectory(const std::string& path) {
                                 : m * std::sqrt(std::pow(v[4] / m, 2) + std::pow(v[5] / m, 2) +
                                                 std::pow(v[6] / m, 2) + std::pow(v[7] / m, 2));
     if (qnorm < 1e-9) throw std::runtime_error(where + ": zero quaternion");
+    if (unique_times) {
+      const auto [it, inserted] = lines.emplace(v[0], line_no);
+      if (!inserted)
+        throw std::runtime_error(where + ": time stamp " + formatSeconds(v[0]) +
+                                 " was already given on line " + std::to_string(it->second) +
+                                 "; a trajectory has one pose per time");
+    }
     mrpt::math::CQuaternionDouble q(v[7] / qnorm, v[4] / qnorm, v[5] / qnorm, v[6] / qnorm);
     traj.push_back({v[0], mrpt::poses::CPose3D(q, v[1], v[2], v[3])});
   }
   return traj;
 }
 
-void writeTumLine(std::ostream& out, const TimedPose& p) {
+void writeTumLine(std::ostream& out, const std::string& time, const mrpt::poses::CPose3D& pose) {
   mrpt::math::CQuaternionDouble q;
-  p.pose.getAsQuaternion(q);
-  out << std::fixed << std::setprecision(9) << p.t << std::setprecision(6) << " " << p.pose.x()
-      << " " << p.pose.y() << " " << p.pose.z() << " " << q.x() << " " << q.y() << " " << q.z()
-      << " " << q.r() << "\n";
+  pose.getAsQuaternion(q);
+  out << time << std::fixed << std::setprecision(6) << " " << pose.x() << " " << pose.y() << " "
+      << pose.z() << " " << q.x() << " " << q.y() << " " << q.z() << " " << q.r() << "\n";
+}
+
+void writeTumLine(std::ostream& out, const TimedPose& p) {
+  writeTumLine(out, formatSeconds(p.t), p.pose);
 }
 
 void saveTumTrajectory(const std::string& path, const Trajectory& traj) {
-  std::ofstream out(path);
-  if (!out) throw std::runtime_error("cannot write trajectory file '" + path + "'");
-  out << "# timestamp tx ty tz qx qy qz qw (optical frame: z forward, x right, y down)\n";
-  for (const auto& p : traj) writeTumLine(out, p);
-  if (!out) throw std::runtime_error("error while writing '" + path + "'");
+  StreamOutput out(path, "trajectory file");
+  out.stream() << "# timestamp tx ty tz qx qy qz qw (optical frame: z forward, x right, y down)\n";
+  for (const auto& p : traj) writeTumLine(out.stream(), p);
+  out.commit();
 }
 
 mrpt::poses::CPose3D mrptFrameInOptical() {

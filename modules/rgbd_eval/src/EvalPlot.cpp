@@ -5,7 +5,11 @@
 #include <algorithm>
 #include <array>
 #include <cstdio>
+#include <opencv2/imgcodecs.hpp>
 #include <stdexcept>
+#include <vector>
+
+#include "rgbd_core/OutputFile.h"
 
 namespace hrgbd {
 namespace {
@@ -102,7 +106,12 @@ void plotEvaluation(const EvalResult& r, const std::string& png_path, const std:
   img.textOut(645, te.b.y0 + 4, fmt("%.3f", te.maxy), black);
   img.textOut(645, te.b.y0 + te.b.h - 14, "0", black);
   img.textOut(te.b.x0 + te.b.w - 50, te.b.y0 + te.b.h + 6, fmt("%.1f s", te.maxx), black);
-  if (!img.saveToFile(png_path)) throw std::runtime_error("cannot write plot '" + png_path + "'");
+  // Encoded here and written as an OutputFile: CImage::saveToFile (cv::imwrite) does not report
+  // a full disk.
+  std::vector<uchar> png;
+  if (!cv::imencode(".png", img.asCvMatRef(), png))
+    throw std::runtime_error("cannot encode plot '" + png_path + "'");
+  writeOutputFile(png_path, "plot", png.data(), png.size());
 }
 
 }  // namespace hrgbd

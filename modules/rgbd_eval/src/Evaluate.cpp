@@ -8,8 +8,11 @@
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
+#include <string>
+#include <utility>
 
 #include "rgbd_core/TimeAssociation.h"
+#include "rgbd_core/Timestamp.h"
 
 namespace hrgbd {
 namespace {
@@ -50,10 +53,51 @@ void computeRpe(const std::vector<double>& t, const Trajectory& gt, const Trajec
   r.rpe_rot = rms(er);
 }
 
+/** Throws unless the estimate has one pose per time stamp: two poses at one time make the
+ * association ambiguous and an RPE interval of 0 s. */
+void requireUniqueTimes(const Trajectory& estimate) {
+  std::vector<double> t;
+  for (const auto& p : estimate) t.push_back(p.t);
+  std::sort(t.begin(), t.end());
+  const auto twice = std::adjacent_find(t.begin(), t.end());
+  if (twice != t.end())
+    throw std::runtime_error("the estimate has more than one pose at time stamp " +
+                             formatSeconds(*twice) + "; it must have one pose per time");
+}
+
+/** Throws unless every associated position is within kMaxEvalCoordinate of the origin. */
+void requireEvaluablePositions(const Trajectory& traj, const std::string& name) {
+  for (const auto& p : traj)
+    for (int k = 0; k < 3; ++k)
+      if (!(std::abs(p.pose[k]) <= kMaxEvalCoordinate))
+        throw std::runtime_error(
+            "the " + name + "'s pose at time stamp " + formatSeconds(p.t) +
+            " has a coordinate of " + formatSeconds(p.pose[k]) +
+            " m; ATE and RPE are computed for coordinates up to 1e9 m " +
+            "(beyond, a double's step exceeds 0.1 um and squares lose the figures)");
+}
+
+/** Throws unless every figure is finite: no inf or nan is ever reported. */
+void requireFinite(const EvalResult& r) {
+  const std::pair<const char*, double> figures[] = {{"ATE RMSE", r.ate_rmse},
+                                                    {"unaligned ATE", r.ate_mean_unaligned},
+                                                    {"RPE translation", r.rpe_trans},
+                                                    {"RPE rotation", r.rpe_rot}};
+  for (const auto& [name, value] : figures)
+    if (!std::isfinite(value))
+      throw std::runtime_error(std::string("the ") + name + " is not finite (" +
+                               formatSeconds(value) + "); the trajectories cannot be evaluated");
+}
+
 }  // namespace
 
 EvalResult evaluateTrajectory(const Trajectory& ground_truth, const Trajectory& estimate,
                               const EvalParams& params) {
+  if (!(params.max_time_difference > 0) || !std::isfinite(params.max_time_difference))
+    throw std::invalid_argument("evaluation: max_time_difference must be a number > 0 s");
+  if (!(params.rpe_delta > 0) || !std::isfinite(params.rpe_delta))
+    throw std::invalid_argument("evaluation: rpe_delta must be a number > 0 s");
+  requireUniqueTimes(estimate);
   std::vector<double> tg, te;
   for (const auto& p : ground_truth) tg.push_back(p.t);
   for (const auto& p : estimate) te.push_back(p.t);
@@ -71,6 +115,8 @@ EvalResult evaluateTrajectory(const Trajectory& ground_truth, const Trajectory& 
     gt.push_back(ground_truth[ig]);
     est.push_back(estimate[ie]);
   }
+  requireEvaluablePositions(gt, "ground truth");
+  requireEvaluablePositions(est, "estimate");
 
   // (1) ATE RMSE after Horn's closed-form alignment of the positions (mrpt::tfest).
   std::vector<mrpt::math::TPoint3D> pg, pe;
@@ -101,17 +147,26 @@ EvalResult evaluateTrajectory(const Trajectory& ground_truth, const Trajectory& 
   // (3) RPE.
   computeRpe(r.t, gt, est, params.rpe_delta, r);
   r.ground_truth = gt;
+  requireFinite(r);
   return r;
 }
 
 std::string toJson(const EvalResult& r) {
-  char buf[512];
-  std::snprintf(buf, sizeof(buf),
-                "{\"ate_rmse\": %.6f, \"ate_mean_unaligned\": %.6f, \"rpe_trans\": %.6f, "
-                "\"rpe_rot\": %.6f, \"pairs\": %zu, \"rpe_delta\": %.3f, \"rpe_pairs\": %zu}",
-                r.ate_rmse, r.ate_mean_unaligned, r.rpe_trans, r.rpe_rot, r.pairs, r.rpe_delta_used,
-                r.rpe_pairs);
-  return buf;
+  // evaluateTrajectory() gives finite figures only; null stands for "none", never inf or nan.
+  auto number = [](double v, const char* format) {
+    if (!std::isfinite(v)) return std::string("null");
+    char buf[512];
+    std::snprintf(buf, sizeof buf, format, v);
+    return std::string(buf);
+  };
+  const bool rpe = r.rpe_pairs > 0;
+  return "{\"ate_rmse\": " + number(r.ate_rmse, "%.6f") +
+         ", \"ate_mean_unaligned\": " + number(r.ate_mean_unaligned, "%.6f") +
+         ", \"rpe_trans\": " + (rpe ? number(r.rpe_trans, "%.6f") : "null") +
+         ", \"rpe_rot\": " + (rpe ? number(r.rpe_rot, "%.6f") : "null") +
+         ", \"pairs\": " + std::to_string(r.pairs) +
+         ", \"rpe_delta\": " + number(r.rpe_delta_used, "%.3f") +
+         ", \"rpe_pairs\": " + std::to_string(r.rpe_pairs) + "}";
 }
 
 std::string toText(const EvalResult& r) {
@@ -119,12 +174,21 @@ std::string toText(const EvalResult& r) {
   std::snprintf(buf, sizeof(buf),
                 "pairs                 %zu\n"
                 "ATE RMSE (aligned)    %.4f m\n"
-                "ATE mean (unaligned)  %.4f m   (paper eq. 10, relative to the first pose)\n"
+                "ATE mean (unaligned)  %.4f m   (paper eq. 10, relative to the first pose)\n",
+                r.pairs, r.ate_rmse, r.ate_mean_unaligned);
+  std::string out = buf;
+  if (r.rpe_pairs == 0) {
+    std::snprintf(buf, sizeof(buf),
+                  "RPE                   none: no interval of %.2f s without a gap "
+                  "(longer than twice that)\n",
+                  r.rpe_delta_used);
+    return out + buf;
+  }
+  std::snprintf(buf, sizeof(buf),
                 "RPE translation       %.4f m/s (RMSE over %.2f s, %zu intervals)\n"
                 "RPE rotation          %.4f deg/s\n",
-                r.pairs, r.ate_rmse, r.ate_mean_unaligned, r.rpe_trans, r.rpe_delta_used,
-                r.rpe_pairs, r.rpe_rot);
-  return buf;
+                r.rpe_trans, r.rpe_delta_used, r.rpe_pairs, r.rpe_rot);
+  return out + buf;
 }
 
 double percentile(std::vector<double> v, double q) {

@@ -10,6 +10,7 @@
 
 #include "ReadGuards.h"
 #include "rgbd_core/ErrorText.h"
+#include "rgbd_core/Timestamp.h"
 
 namespace hrgbd {
 namespace {
@@ -82,6 +83,12 @@ mrpt::obs::CObservation3DRangeScan::Ptr RawlogSource::next() {
   auto obs = m_pending.front();
   m_pending.pop_front();
   normaliseFlags(*obs);
+  try {
+    checkFrameTime(obs->timestamp);
+  } catch (const std::invalid_argument& e) {
+    throw std::runtime_error("rawlog '" + m_path + "' entry " + std::to_string(m_entry - 1) + ": " +
+                             e.what());
+  }
   if (obs->hasIntensityImage && obs->intensityImage.isExternallyStored()) {
     mrpt::img::CImage::setImagesPathBase(m_images_dir);
     const auto file = obs->intensityImage.getExternalStorageFileAbsolutePath();
@@ -97,6 +104,15 @@ mrpt::obs::CObservation3DRangeScan::Ptr RawlogSource::next() {
   }
   ++m_stats.frames;
   return obs;
+}
+
+std::vector<JobPath> RawlogSource::inputs() const {
+  std::vector<JobPath> out{{m_path, "the input rawlog"},
+                           {groundTruthPathFor(m_path), "the input rawlog's ground truth"}};
+  // The image folder MRPT falls back to may not exist (no external images): nothing to protect.
+  if (std::filesystem::is_directory(m_images_dir))
+    out.push_back({m_images_dir, "the input rawlog's image folder", true});
+  return out;
 }
 
 std::string RawlogSource::describe() const {

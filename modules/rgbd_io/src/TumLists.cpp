@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "rgbd_core/TimeAssociation.h"
+#include "rgbd_core/Timestamp.h"
 
 namespace hrgbd {
 
@@ -20,11 +21,19 @@ std::vector<TumListEntry> parseTumListText(const std::string& text, const std::s
     TumListEntry e;
     e.line = line_no;
     const auto where = "'" + name + "' line " + std::to_string(line_no);
-    if (!(ss >> e.t >> e.file)) throw std::runtime_error(where + ": expected 'timestamp filename'");
-    if (!std::isfinite(e.t)) throw std::runtime_error(where + ": non-finite time stamp");
-    if (!out.empty() && !(e.t > out.back().t))
-      throw std::runtime_error(where + ": time stamp " + std::to_string(e.t) +
-                               " is not after the previous one (" + std::to_string(out.back().t) +
+    std::string stamp;
+    if (!(ss >> stamp >> e.file))
+      throw std::runtime_error(where + ": expected 'timestamp filename'");
+    try {
+      e.stamp = parseFrameTime(stamp);
+    } catch (const std::invalid_argument& bad) {
+      throw std::runtime_error(where + ": " + bad.what());
+    }
+    e.t = frameSeconds(e.stamp);
+    if (!out.empty() && !(e.stamp > out.back().stamp))
+      throw std::runtime_error(where + ": time stamp " + stamp +
+                               " is not after the previous one (" +
+                               formatFrameTime(out.back().stamp) +
                                "); TUM lists must be in strictly increasing time order");
     out.push_back(e);
   }

@@ -4,6 +4,7 @@
 #include <mrpt/system/filesystem.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <opencv2/imgcodecs.hpp>
 #include <stdexcept>
 
@@ -36,6 +37,20 @@ TumSource::TumSource(const std::string& folder, const TumSourceParams& params)
 
   const auto gt = folder + "/groundtruth.txt";
   if (mrpt::system::fileExists(gt)) m_ground_truth = loadTumTrajectory(gt);
+
+  // What no output may overwrite: the lists, the ground truth, the association lists TUM's
+  // associate.py writes (associat*.txt) and every image listed, paired or not.
+  for (const auto* name : {"rgb.txt", "depth.txt", "groundtruth.txt"})
+    m_inputs.push_back({folder + "/" + name, std::string("the TUM folder's ") + name});
+  std::error_code ec;
+  for (const auto& f : std::filesystem::directory_iterator(folder, ec)) {
+    const auto name = f.path().filename().string();
+    if (name.rfind("associat", 0) == 0 && f.path().extension() == ".txt")
+      m_inputs.push_back({f.path().string(), "the TUM folder's " + name});
+  }
+  for (const auto* list : {&rgb, &depth})
+    for (const auto& e : *list)
+      m_inputs.push_back({folder + "/" + e.file, "the TUM folder's image " + e.file});
 }
 
 mrpt::obs::CObservation3DRangeScan::Ptr TumSource::next() {
@@ -55,7 +70,7 @@ mrpt::obs::CObservation3DRangeScan::Ptr TumSource::next() {
   if (depth.cols != static_cast<int>(cam.ncols) || depth.rows != static_cast<int>(cam.nrows))
     cam.scaleToResolution(depth.cols, depth.rows);
   ++m_stats.frames;
-  return makeRgbdObservation(bgr, depth, 1.0 / m_params.depth_factor, cam, p.rgb.t);
+  return makeRgbdObservation(bgr, depth, 1.0 / m_params.depth_factor, cam, p.rgb.stamp);
 }
 
 std::string TumSource::describe() const {

@@ -10,6 +10,7 @@
 #include "rgbd_app/TextSinks.h"
 #include "rgbd_app/makeOdometry.h"
 #include "rgbd_core/Config.h"
+#include "rgbd_core/JobPaths.h"
 #include "rgbd_core/Trajectory.h"
 #include "rgbd_io/openFrameSource.h"
 #include "rgbd_live/Grabber.h"
@@ -29,14 +30,25 @@ struct LiveSinks {
 
   LiveSinks(const MapParams& params, LiveViewer& window) : map(params), viewer(window, map) {}
   std::vector<FrameSink*> list() { return {&trajectory, &map, &viewer}; }
-  /** Writes <prefix>map.ply, <prefix>map.3Dscene and <prefix>trajectory.txt as they are now. */
+  /** Writes <prefix>map.ply, <prefix>map.3Dscene and <prefix>trajectory.txt as they are now,
+   * each in full or not at all; throws naming the file that cannot be written. */
   void save(const std::string& prefix, std::ostream& log) const {
     map.save({prefix + "map.ply", prefix + "map.3Dscene"});
-    saveTumTrajectory(prefix + "trajectory.txt", trajectory.trajectory());
+    trajectory.save(prefix + "trajectory.txt",
+                    "# rgbd-live: timestamp tx ty tz qx qy qz qw (optical frame of the first "
+                    "camera)");
     log << "saved " << prefix << "map.ply (" << map.map().size() << " points), " << prefix
         << "map.3Dscene, " << prefix << "trajectory.txt\n";
   }
 };
+
+/** The files [s] and the end of a held run write. */
+std::vector<JobPath> savedFiles(const std::string& prefix) {
+  std::vector<JobPath> out;
+  for (const auto* name : {"map.ply", "map.3Dscene", "trajectory.txt"})
+    out.push_back({prefix + name, std::string("--save-prefix's ") + name, false, true});
+  return out;
+}
 
 /** Steps the loop between the window's keys ([p] pause, [r] reset, [s] save, [q] quit) until
  * [q], the window is closed, or the hold after the end of the data expires. */
@@ -48,8 +60,15 @@ void runControls(FrameLoop& loop, LiveSinks& sinks, LiveViewer& viewer, const Gr
     const int key = viewer.key();
     if (key == 'q' || key == 27) break;
     if (key == 'p' || key == ' ') viewer.status((paused = !paused) ? "paused" : "");
-    if (key == 's')
-      sinks.save(opt.save_prefix, log), viewer.status("saved " + opt.save_prefix + "*");
+    if (key == 's') {
+      try {  // a failed save is shown and the session goes on; the files stay as they were
+        sinks.save(opt.save_prefix, log);
+        viewer.status("saved " + opt.save_prefix + "*");
+      } catch (const std::exception& e) {
+        log << "save failed: " << e.what() << std::endl;
+        viewer.status(std::string("save failed: ") + e.what());
+      }
+    }
     if (key == 'r') {
       loop.reset();
       viewer.status("reset: the next frame is the new origin");
@@ -81,6 +100,9 @@ void runLive(const LiveOptions& opt, std::ostream& log) {
   map_params.loadFromConfigFile(*cfg, "Map");
   auto odometry = makeOdometry(params, *cfg);
   auto source = openFrameSource(opt.input, *cfg);  // throws "no OpenNI2 sensor ..." clearly
+  auto inputs = source->inputs();
+  inputs.push_back({opt.config, "the configuration file (--config)"});
+  checkJobPaths(inputs, savedFiles(opt.save_prefix));
   log << "input: " << source->describe() << "\nmethod: " << toString(params.method) << std::endl;
   LiveViewer viewer("hybrid-rgbd-odometry live: " + opt.input);
   Grabber grabber(std::move(source), opt.input == "openni2", opt.rate);

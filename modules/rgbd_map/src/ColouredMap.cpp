@@ -6,10 +6,11 @@
 #include <mrpt/opengl/stock_objects.h>
 
 #include <cmath>
-#include <fstream>
 #include <stdexcept>
 
 #include "rgbd_core/Config.h"
+#include "rgbd_core/GzOutput.h"
+#include "rgbd_core/OutputFile.h"
 #include "rgbd_core/RgbdImage.h"
 #include "rgbd_core/Trajectory.h"
 
@@ -64,7 +65,8 @@ std::size_t ColouredMap::insert(const mrpt::obs::CObservation3DRangeScan& obs,
 
 // Hand-written: MRPT 2.5's PLY exporter writes a grey "intensity" per point, not its colour.
 void ColouredMap::savePly(const std::string& path) const {
-  std::ofstream out(path, std::ios::binary);
+  StreamOutput file(path, "PLY", true);
+  std::ostream& out = file.stream();
   out << "ply\nformat binary_little_endian 1.0\ncomment hybrid-rgbd-odometry coloured map, "
          "MRPT world frame (z up) [m]\nelement vertex "
       << m_points.size()
@@ -79,7 +81,7 @@ void ColouredMap::savePly(const std::string& path) const {
     out.write(reinterpret_cast<const char*>(xyz), sizeof xyz);  // x86/ARM: little endian
     out.write(reinterpret_cast<const char*>(rgb), sizeof rgb);
   }
-  if (!out) throw std::runtime_error("cannot write PLY '" + path + "'");
+  file.commit();
 }
 
 mrpt::opengl::CSetOfObjects::Ptr trajectoryObject(const std::vector<mrpt::poses::CPose3D>& poses,
@@ -111,7 +113,7 @@ void saveScene(const ColouredMap& map, const std::vector<mrpt::poses::CPose3D>& 
   scene.insert(cloud);
   scene.insert(trajectoryObject(poses));
   scene.insert(mrpt::opengl::stock_objects::CornerXYZSimple(0.3f, 2.f));
-  if (!scene.saveToFile(path)) throw std::runtime_error("cannot write scene '" + path + "'");
+  saveCompressed(scene, path, ".3Dscene");  // as COpenGLScene::saveToFile(), checked
 }
 
 }  // namespace hrgbd

@@ -6,13 +6,14 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <iomanip>
 #include <opencv2/imgcodecs.hpp>
 #include <sstream>
+#include <vector>
 
 #include "rgbd_core/Config.h"
 #include "rgbd_core/Intrinsics.h"
+#include "rgbd_core/OutputFile.h"
 #include "rgbd_core/RgbdFrame.h"
 #include "rgbd_io/RawlogSource.h"
 
@@ -169,7 +170,9 @@ SensorFrame renderFrame(const Scene& scene, const PinholeCamera& cam, const SimP
       ideal, cam, {poses.path[i].pose, poses.before[i].pose, gain, kDepthFactor}, p.sensor, rng);
 }
 
-/** Writes the frames into the requested outputs: a rawlog and/or a TUM folder. */
+/** Writes the frames into the requested outputs: a rawlog and/or a TUM folder. Each file is an
+ * OutputFile: the rawlog, lists and ground truth appear under their names only when finish()
+ * succeeds; every image is checked as written. */
 class SequenceWriter {
  public:
   SequenceWriter(const SimOutputs& outputs, const std::string& scene_name, const PinholeCamera& cam)
@@ -185,40 +188,57 @@ class SequenceWriter {
     if (m_rawlog)
       m_rawlog->write(*makeRgbdObservation(frame.bgr, frame.depth, 1.0 / kDepthFactor, m_camera, t,
                                            "RGBD_SIM"));
-    if (!m_rgb_txt.is_open()) return;
+    if (!m_rgb_txt) return;
     std::ostringstream name;
     name << std::fixed << std::setprecision(6) << t << ".png";
-    cv::imwrite(m_outputs.tum_folder + "/rgb/" + name.str(), frame.bgr);
-    cv::imwrite(m_outputs.tum_folder + "/depth/" + name.str(), frame.depth);
-    m_rgb_txt << std::fixed << std::setprecision(6) << t << " rgb/" << name.str() << "\n";
-    m_depth_txt << std::fixed << std::setprecision(6) << t << " depth/" << name.str() << "\n";
+    writePng(m_outputs.tum_folder + "/rgb/" + name.str(), frame.bgr);
+    writePng(m_outputs.tum_folder + "/depth/" + name.str(), frame.depth);
+    m_rgb_txt->stream() << std::fixed << std::setprecision(6) << t << " rgb/" << name.str() << "\n";
+    m_depth_txt->stream() << std::fixed << std::setprecision(6) << t << " depth/" << name.str()
+                          << "\n";
   }
 
-  /** Ground truth beside the rawlog and into the TUM folder. */
+  /** Ground truth beside the rawlog and into the TUM folder; every file moved into place. */
   void finish(const Trajectory& ground_truth) {
-    if (m_rawlog) saveTumTrajectory(groundTruthPathFor(m_outputs.rawlog), ground_truth);
-    if (m_rgb_txt.is_open())
+    if (m_rawlog) {
+      m_rawlog->close();
+      saveTumTrajectory(groundTruthPathFor(m_outputs.rawlog), ground_truth);
+    }
+    if (m_rgb_txt) {
+      m_rgb_txt->commit();
+      m_depth_txt->commit();
       saveTumTrajectory(m_outputs.tum_folder + "/groundtruth.txt", ground_truth);
+    }
   }
 
  private:
   void openTumFolder(const std::string& scene_name) {
     const std::string& dir = m_outputs.tum_folder;
-    std::filesystem::create_directories(dir + "/rgb");
-    std::filesystem::create_directories(dir + "/depth");
-    m_rgb_txt.open(dir + "/rgb.txt");
-    m_depth_txt.open(dir + "/depth.txt");
-    if (!m_rgb_txt || !m_depth_txt) throw std::runtime_error("cannot write into '" + dir + "'");
-    m_rgb_txt << "# color images\n# file: rgbd-simulate " << scene_name
-              << "\n# timestamp filename\n";
-    m_depth_txt << "# depth maps\n# file: rgbd-simulate " << scene_name
-                << "\n# timestamp filename\n";
+    std::error_code ec;
+    for (const auto* sub : {"/rgb", "/depth"})
+      if (!std::filesystem::create_directories(dir + sub, ec) && ec)
+        throw std::runtime_error("cannot create folder '" + dir + sub + "': " + ec.message());
+    m_rgb_txt = std::make_unique<StreamOutput>(dir + "/rgb.txt", "TUM list");
+    m_depth_txt = std::make_unique<StreamOutput>(dir + "/depth.txt", "TUM list");
+    m_rgb_txt->stream() << "# color images\n# file: rgbd-simulate " << scene_name
+                        << "\n# timestamp filename\n";
+    m_depth_txt->stream() << "# depth maps\n# file: rgbd-simulate " << scene_name
+                          << "\n# timestamp filename\n";
+  }
+
+  /** PNG through cv::imencode and a checked OutputFile (cv::imwrite does not report a full disk).
+   */
+  static void writePng(const std::string& path, const cv::Mat& image) {
+    std::vector<uchar> bytes;
+    if (!cv::imencode(".png", image, bytes))
+      throw std::runtime_error("cannot encode image '" + path + "'");
+    writeOutputFile(path, "image", bytes.data(), bytes.size());
   }
 
   const SimOutputs& m_outputs;
   mrpt::img::TCamera m_camera;
   std::unique_ptr<RawlogWriter> m_rawlog;
-  std::ofstream m_rgb_txt, m_depth_txt;
+  std::unique_ptr<StreamOutput> m_rgb_txt, m_depth_txt;
 };
 
 double median(std::vector<double> v) {
@@ -227,6 +247,24 @@ double median(std::vector<double> v) {
 }
 
 }  // namespace
+
+std::vector<JobPath> writtenFiles(const SimOutputs& outputs) {
+  std::vector<JobPath> out;
+  if (!outputs.rawlog.empty()) {
+    out.push_back({outputs.rawlog, "--rawlog", false, true});
+    out.push_back({groundTruthPathFor(outputs.rawlog), "--rawlog's ground truth", false, true});
+    if (outputs.images != ImageStorage::Inline)
+      out.push_back({imagesFolderFor(outputs.rawlog), "--rawlog's image folder", true, true});
+  }
+  if (!outputs.tum_folder.empty()) {
+    for (const auto* name : {"rgb.txt", "depth.txt", "groundtruth.txt"})
+      out.push_back({outputs.tum_folder + "/" + name, std::string("--tum's ") + name, false, true});
+    for (const auto* name : {"rgb", "depth"})
+      out.push_back(
+          {outputs.tum_folder + "/" + name, std::string("--tum's ") + name + "/", true, true});
+  }
+  return out;
+}
 
 SimResult simulate(const SimParams& p, const SimOutputs& outputs) {
   const auto scene = makeScene(p.scene, p.far);

@@ -32,7 +32,8 @@ class ColouredMapSink : public FrameSink {
   void finish(std::ostream& log) override;
   /** Empties the map and the path. */
   void reset() override;
-  /** Writes the map as it is now to `files`; throws std::runtime_error on failure. */
+  /** Writes the map as it is now to `files`, each in full or not at all (OutputFile.h); throws
+   * std::runtime_error naming the file on failure. */
   void save(const MapFiles& files) const;
   const ColouredMap& map() const { return m_map; }
   /** Camera poses in the MRPT world (opticalToMrptWorld()). */
@@ -48,10 +49,12 @@ class ColouredMapSink : public FrameSink {
  * RawLogViewer and `rawlog-edit --list-poses` read it. Colour images go to PNG files. */
 class PosedRawlogSink : public FrameSink {
  public:
-  /** Opens `path`; throws std::runtime_error if it cannot. */
+  /** Starts `path` (RawlogWriter; colour images in imagesFolderFor(path)); throws
+   * std::runtime_error if it cannot. */
   explicit PosedRawlogSink(const std::string& path);
   void add(const mrpt::obs::CObservation3DRangeScan& obs, const FrameResult& r) override;
-  /** Closes the file (flushes the gzip stream) and logs it. */
+  /** Completes the rawlog and moves it into place (RawlogWriter::close(): throws naming it if a
+   * write failed) and logs it. Without finish(), no rawlog appears under its name. */
   void finish(std::ostream& log) override;
 
  private:
@@ -65,7 +68,8 @@ class SimplemapSink : public FrameSink {
  public:
   explicit SimplemapSink(const std::string& path) : m_path(path) {}
   void add(const mrpt::obs::CObservation3DRangeScan& obs, const FrameResult& r) override;
-  /** Writes the file (throws std::runtime_error if it cannot) and logs it. */
+  /** Writes the file in full or not at all (throws std::runtime_error naming it if it cannot)
+   * and logs it. */
   void finish(std::ostream& log) override;
   void reset() override { m_simplemap.clear(); }
 

@@ -43,9 +43,13 @@ struct PlaybackSummary {
   std::size_t map_points = 0;  //!< points in the coloured map (when a map output was asked)
 };
 
-/** Runs the whole job; progress and results are written to `log`. Throws on bad configuration
- * or unreadable input; frames that cannot be registered are flagged in the results. The
- * trajectory and CSV are flushed line by line, so a run that stops keeps what it wrote. */
+/** Runs the whole job; progress and results are written to `log`. Throws on bad configuration,
+ * unreadable input or an output that cannot be written; frames that cannot be registered are
+ * flagged in the results. Before anything is written, an output that would overwrite an input
+ * (the input's files, the configuration file) or another output is refused (checkJobPaths():
+ * UsageError when the command-line option named it, ConfigError for a [Playback] key). Every
+ * output is written in full or not at all (OutputFile.h): a run that fails leaves no partial
+ * trajectory or CSV under the output's name. */
 PlaybackSummary runPlayback(const PlaybackOptions& options, std::ostream& log);
 
 }  // namespace hrgbd

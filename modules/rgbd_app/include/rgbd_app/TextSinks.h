@@ -1,48 +1,62 @@
 #pragma once
 /** \file TextSinks.h
  * Sinks that write text as the frames come: the TUM trajectory, the per-frame CSV and the
- * progress bar. Files are flushed line by line, so a run that stops keeps what it wrote. */
-#include <fstream>
+ * progress bar. The files are OutputFiles (rgbd_core/OutputFile.h): each line is written and
+ * flushed, with the write checked, to a temporary file beside the output, which finish() moves
+ * into place; a run that fails leaves no partial trajectory or CSV under the output's name. */
 #include <iosfwd>
+#include <memory>
 #include <string>
+#include <vector>
 
 #include "rgbd_app/FrameSink.h"
+#include "rgbd_core/OutputFile.h"
 #include "rgbd_core/Trajectory.h"
 
 namespace hrgbd {
 
 /** The estimated trajectory, kept in memory and, when given a file, written to it as TUM lines
- * (writeTumLine()) after a first '#' comment line. */
+ * (writeTumLine()) after a first '#' comment line. Each pose has its frame's time stamp
+ * (obs.timestamp), written exactly (formatFrameTime()). */
 class TrajectorySink : public FrameSink {
  public:
-  /** Memory only (trajectory()). */
+  /** Memory only (trajectory(), save()). */
   TrajectorySink() = default;
   /** Also writes `path`, starting with `comment` (a line starting with '#'); throws
    * std::runtime_error if the file cannot be written. */
   TrajectorySink(const std::string& path, const std::string& comment);
+  /** Throws std::runtime_error naming the file when the line cannot be written. */
   void add(const mrpt::obs::CObservation3DRangeScan& obs, const FrameResult& r) override;
-  /** Logs "trajectory: <path>" when writing a file. */
+  /** Moves the file into place (throws naming it if a write failed) and logs
+   * "trajectory: <path>". */
   void finish(std::ostream& log) override;
   /** Drops the poses kept in memory; lines already written stay in the file. */
-  void reset() override { m_trajectory.clear(); }
+  void reset() override;
   /** Poses (optical frame of the first camera) since the start or the last reset. */
   const Trajectory& trajectory() const { return m_trajectory; }
+  /** Writes the poses kept in memory to `path` (TUM, exact time stamps), in full or not at all;
+   * throws naming the file on failure. */
+  void save(const std::string& path, const std::string& comment) const;
 
  private:
-  std::string m_path;
-  std::ofstream m_file;
+  std::unique_ptr<StreamOutput> m_file;
   Trajectory m_trajectory;
+  std::vector<std::string> m_times;  //!< formatFrameTime() of each pose in m_trajectory
 };
 
-/** One CSV row per frame with the FrameResult's figures (status, path, counts, stage times). */
+/** One CSV row per frame with the FrameResult's figures (status, path, counts, stage times); the
+ * timestamp column is the frame's exact time stamp. */
 class CsvSink : public FrameSink {
  public:
   /** Writes the header; throws std::runtime_error if `path` cannot be written. */
   explicit CsvSink(const std::string& path);
+  /** Throws std::runtime_error naming the file when the row cannot be written. */
   void add(const mrpt::obs::CObservation3DRangeScan& obs, const FrameResult& r) override;
+  /** Moves the file into place (throws naming it if a write failed) and logs "CSV: <path>". */
+  void finish(std::ostream& log) override;
 
  private:
-  std::ofstream m_file;
+  StreamOutput m_file;
 };
 
 /** A one-line progress bar (frames, registered, time of the last frame) redrawn per frame. */

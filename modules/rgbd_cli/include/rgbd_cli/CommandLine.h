@@ -5,7 +5,8 @@
  *   - `--help` / `--version` print to stdout and exit 0 without running the work;
  *   - a parse error or a value that fails its constraint prints "<app>: error: <what>" and a
  *     one-line hint to stderr and exits 2 without running the work;
- *   - an exception from the work prints "<app>: error: <what>" and exits 1 (UsageError: 2). */
+ *   - an exception from the work prints "<app>: error: <what>" and exits 1 (UsageError, declared
+ *     in rgbd_core/Config.h: 2). */
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt/typemeta/TEnumType.h>
 
@@ -25,13 +26,6 @@ enum ExitCode : int {
   kExitSuccess = 0,       //!< the work ran, or --help / --version printed
   kExitRuntimeError = 1,  //!< the work threw (bad input file, configuration, sensor...)
   kExitUsageError = 2,    //!< the command line was refused; nothing ran
-};
-
-/** Thrown by an app's work for a command line that parses but is incomplete or inconsistent
- * (e.g. no output given); run() reports it like a parse error (exit 2). Throw it before any
- * output is written. */
-struct UsageError : public std::runtime_error {
-  using std::runtime_error::runtime_error;
 };
 
 /** A TCLAP command line for one app. Declare the arguments after it (they register with it and

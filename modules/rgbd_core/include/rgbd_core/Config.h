@@ -18,6 +18,13 @@ struct ConfigError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/** Thrown by an app's work for a command line that parses but is incomplete or inconsistent
+ * (e.g. no output given, an output naming an input); CommandLine::run() (rgbd_cli) reports it
+ * like a parse error (exit 2). Throw it before any output is written. */
+struct UsageError : public std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 /** Throws ConfigError if `section` holds a key not in `known`. */
 void rejectUnknownKeys(const mrpt::config::CConfigFileBase& cfg, const std::string& section,
                        const std::vector<std::string>& known);

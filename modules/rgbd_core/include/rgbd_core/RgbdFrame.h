@@ -15,8 +15,14 @@ namespace hrgbd {
  * \param depth_unit  [m] per unit of `depth_raw` (1/5000 for TUM). Stored as `rangeUnits`, so the
  *                    raw values keep full precision.
  * \param cam         intrinsics of both cameras (they coincide).
- * \param t           [s] UNIX time stamp.
+ * \param t           time stamp (Timestamp.h).
  * Throws std::invalid_argument for wrong types, sizes that differ from each other or from `cam`. */
+mrpt::obs::CObservation3DRangeScan::Ptr makeRgbdObservation(
+    const cv::Mat& bgr, const cv::Mat& depth_raw, double depth_unit, const mrpt::img::TCamera& cam,
+    mrpt::Clock::time_point t, const std::string& label = "RGBD");
+
+/** Same with the time stamp in seconds of UNIX time, rounded to MRPT's 100 ns
+ * (frameTimeFromSeconds(): std::invalid_argument outside [0, 1e11) s). */
 mrpt::obs::CObservation3DRangeScan::Ptr makeRgbdObservation(const cv::Mat& bgr,
                                                             const cv::Mat& depth_raw,
                                                             double depth_unit,

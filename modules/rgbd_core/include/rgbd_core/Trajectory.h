@@ -27,13 +27,20 @@ using Trajectory = std::vector<TimedPose>;
 
 /** Reads a TUM trajectory file. Lines starting with '#' and blank lines are skipped. Throws
  * std::runtime_error naming the file and line for a malformed line, a non-finite value or a
- * zero quaternion; quaternions are normalised. Entries are returned in file order. */
-Trajectory loadTumTrajectory(const std::string& path);
+ * zero quaternion, and, with `unique_times`, for a time stamp already given on an earlier line
+ * (TUM ground truth may repeat one: the original fr2/desk file does). Quaternions are
+ * normalised. Entries are returned in file order. */
+Trajectory loadTumTrajectory(const std::string& path, bool unique_times = false);
 
-/** Writes one TUM line (`t tx ty tz qx qy qz qw`, 9 decimals for t, 6 for the rest). */
+/** Writes one TUM line (`t tx ty tz qx qy qz qw`): t as formatSeconds() writes it (the shortest
+ * text that reads back as the same double), the rest with 6 decimals. */
 void writeTumLine(std::ostream& out, const TimedPose& p);
 
-/** Writes a whole trajectory with a '#' header comment; throws if the file cannot be written. */
+/** Same with the time stamp's text given (e.g. formatFrameTime() of a frame's exact stamp). */
+void writeTumLine(std::ostream& out, const std::string& time, const mrpt::poses::CPose3D& pose);
+
+/** Writes a whole trajectory with a '#' header comment, in full or not at all (OutputFile.h);
+ * throws naming the file if it cannot be written. */
 void saveTumTrajectory(const std::string& path, const Trajectory& traj);
 
 /** Pose of MRPT's sensor frame (x fwd, y left, z up) relative to the optical frame (z fwd,

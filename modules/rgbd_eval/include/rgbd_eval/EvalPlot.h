@@ -9,7 +9,8 @@
 namespace hrgbd {
 
 /** Draws `r` into a 1200x560 PNG. "From above" = the two world axes along which the ground truth
- * spreads most (x-y for TUM's motion-capture frame). Throws if the file cannot be written. */
+ * spreads most (x-y for TUM's motion-capture frame). Writes the file in full or not at all
+ * (OutputFile.h); throws std::runtime_error naming it if it cannot. */
 void plotEvaluation(const EvalResult& r, const std::string& png_path,
                     const std::string& title = "");
 

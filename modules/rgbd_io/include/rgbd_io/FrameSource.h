@@ -5,7 +5,9 @@
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
+#include "rgbd_core/JobPaths.h"
 #include "rgbd_core/Trajectory.h"
 
 namespace hrgbd {
@@ -18,8 +20,8 @@ struct SourceStats {
 
 /** A stream of RGB-D frames.
  * next() returns the next frame, or nullptr at the end of the data, and only then. Any error
- * (unreadable file, corrupt or truncated data, missing image) throws std::runtime_error whose
- * message names the file and the entry. */
+ * (unreadable file, corrupt or truncated data, missing image, a time stamp outside
+ * Timestamp.h's range) throws std::runtime_error whose message names the file and the entry. */
 class FrameSource {
  public:
   virtual ~FrameSource() = default;
@@ -28,6 +30,9 @@ class FrameSource {
   virtual Trajectory groundTruth() const { return {}; }
   /** One line saying what this source reads, for logs. */
   virtual std::string describe() const = 0;
+  /** The files and folders it reads, which no output may overwrite (checkJobPaths()); none for a
+   * sensor. */
+  virtual std::vector<JobPath> inputs() const { return {}; }
   const SourceStats& stats() const { return m_stats; }
 
  protected:

@@ -19,13 +19,16 @@ std::string groundTruthPathFor(const std::string& rawlog_path);
  * (actions, other observations) are skipped and counted in stats().skipped_objects. Externally
  * stored images are
  * loaded on next() ("<stem>_Images/" or what MRPT detects). Clean end of file -> nullptr; a
- * truncated or corrupt file -> exception naming the file and entry. */
+ * truncated or corrupt file, or a frame whose time stamp is unset or outside [1970, 1e11 s)
+ * (Timestamp.h) -> exception naming the file and entry. */
 class RawlogSource : public FrameSource {
  public:
   explicit RawlogSource(const std::string& path);
   mrpt::obs::CObservation3DRangeScan::Ptr next() override;
   Trajectory groundTruth() const override { return m_ground_truth; }
   std::string describe() const override;
+  /** The rawlog, its external image folder and its ground truth. */
+  std::vector<JobPath> inputs() const override;
 
  private:
   std::string m_path;

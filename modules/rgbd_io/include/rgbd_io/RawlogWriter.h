@@ -1,13 +1,14 @@
 #pragma once
 /** \file RawlogWriter.h
  * Writes observations to a gzip rawlog (observations-only format) that RawLogViewer and
- * rawlog-edit open. */
-#include <mrpt/io/CFileGZOutputStream.h>
+ * rawlog-edit open, in full or not at all. */
 #include <mrpt/obs/CObservation.h>
 #include <mrpt/typemeta/TEnumType.h>
 
 #include <memory>
 #include <string>
+
+#include "rgbd_core/GzOutput.h"
 
 namespace mrpt::serialization {
 class CArchive;
@@ -34,22 +35,36 @@ MRPT_ENUM_TYPE_END()
 
 namespace hrgbd {
 
+/** The folder of a rawlog's external images, MRPT's convention: "<dir>/<stem>_Images". */
+std::string imagesFolderFor(const std::string& rawlog_path);
+
 class RawlogWriter {
  public:
-  /** Opens `path` for writing (gzip level `compression`, 1..9); throws if it cannot. */
+  /** Starts `path` (gzip level `compression`, 1..9) as an OutputFile: the rawlog appears under
+   * its name only when close() succeeds. External images go straight into imagesFolder(),
+   * created here; with them, `path` must be a regular file (not a device such as /dev/null).
+   * Throws naming the file or folder if it cannot. */
   explicit RawlogWriter(const std::string& path, ImageStorage images = ImageStorage::Inline,
                         int compression = 6);
+  /** Without close(): the rawlog is discarded (images already written stay). */
   ~RawlogWriter();
-  /** Appends one object (observation, SensoryFrame, ...; gzip buffers it until close). 3D range
-   * scans with external storage get their colour image written to a file first; the caller's object
-   * is not modified. */
+  /** Appends one object (observation, SensoryFrame, ...). 3D range scans with external storage
+   * get their colour image written to a file first; the caller's object is not modified. Throws
+   * naming the file when a write fails. */
   void write(const mrpt::serialization::CSerializable& obj);
+  /** Completes the gzip stream, checks it and moves the rawlog into place; throws naming the file
+   * on failure (e.g. a full disk). */
+  void close();
   std::size_t written() const { return m_count; }
+  /** Where external images go ("" for inline storage). */
+  const std::string& imagesFolder() const { return m_images_dir; }
 
  private:
+  void append(const mrpt::serialization::CSerializable& obj);
+
   std::string m_path, m_images_dir;
   ImageStorage m_images;
-  mrpt::io::CFileGZOutputStream m_file;
+  std::unique_ptr<GzOutputStream> m_file;
   std::unique_ptr<mrpt::serialization::CArchive> m_archive;
   std::size_t m_count = 0;
 };

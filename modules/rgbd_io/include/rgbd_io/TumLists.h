@@ -1,6 +1,8 @@
 #pragma once
 /** \file TumLists.h
  * TUM RGB-D list files (`rgb.txt`, `depth.txt`: "timestamp filename") and their association. */
+#include <mrpt/core/Clock.h>
+
 #include <string>
 #include <vector>
 
@@ -8,14 +10,16 @@ namespace hrgbd {
 
 /** One entry of a TUM list file. */
 struct TumListEntry {
-  double t = 0;      //!< [s]
-  std::string file;  //!< path relative to the dataset folder
-  int line = 0;      //!< line number in the list file, for messages
+  double t = 0;                   //!< [s]
+  mrpt::Clock::time_point stamp;  //!< the same, exactly as written (Timestamp.h)
+  std::string file;               //!< path relative to the dataset folder
+  int line = 0;                   //!< line number in the list file, for messages
 };
 
 /** Parses a TUM list. Comments ('#') and blank lines are skipped. Throws std::runtime_error
- * naming the file and line for a malformed line, a non-finite time, or a time stamp that is not
- * strictly greater than the previous one (duplicated or out-of-order stamps). */
+ * naming the file and line for a malformed line, a time stamp that is no frame time
+ * (parseFrameTime(): negative, not below 1e11 s, finer than 100 ns, not a number), or one that
+ * is not strictly greater than the previous one (duplicated or out-of-order stamps). */
 std::vector<TumListEntry> parseTumList(const std::string& path);
 
 /** Same, from text already in memory; `name` is used in messages. */

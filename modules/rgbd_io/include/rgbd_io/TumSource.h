@@ -36,11 +36,14 @@ struct TumSourceParams : public Params<TumSourceParams> {
 
 class TumSource : public FrameSource {
  public:
-  /** Reads and associates the lists now; throws naming the file if anything is wrong. */
+  /** Reads and associates the lists now; throws naming the file if anything is wrong. Frames carry
+   * their list time stamps exactly (Timestamp.h). */
   TumSource(const std::string& folder, const TumSourceParams& params = {});
   mrpt::obs::CObservation3DRangeScan::Ptr next() override;
   Trajectory groundTruth() const override { return m_ground_truth; }
   std::string describe() const override;
+  /** The lists, groundtruth.txt, association lists (associat*.txt) and every listed image. */
+  std::vector<JobPath> inputs() const override { return m_inputs; }
 
   const mrpt::img::TCamera& camera() const { return m_camera; }
   std::size_t size() const { return m_pairs.size(); }
@@ -54,6 +57,7 @@ class TumSource : public FrameSource {
   std::vector<TumPair> m_pairs;
   std::size_t m_next = 0, m_unmatched_rgb = 0;
   Trajectory m_ground_truth;
+  std::vector<JobPath> m_inputs;
 };
 
 }  // namespace hrgbd

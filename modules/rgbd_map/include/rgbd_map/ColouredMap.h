@@ -47,7 +47,8 @@ class ColouredMap {
   void clear();
   std::size_t size() const { return m_points.size(); }
   const mrpt::maps::CColouredPointsMap& points() const { return m_points; }
-  /** Binary PLY with colour; throws std::runtime_error naming the file on failure. */
+  /** Binary PLY with colour, in full or not at all (OutputFile.h); throws std::runtime_error
+   * naming the file on failure. */
   void savePly(const std::string& path) const;
 
  private:
@@ -61,7 +62,8 @@ class ColouredMap {
 mrpt::opengl::CSetOfObjects::Ptr trajectoryObject(const std::vector<mrpt::poses::CPose3D>& poses,
                                                   std::size_t frustums = 10);
 
-/** Saves map + camera path as an MRPT .3Dscene (SceneViewer3D); throws on failure. */
+/** Saves map + camera path as an MRPT .3Dscene (SceneViewer3D), in full or not at all; throws
+ * std::runtime_error naming the file on failure. */
 void saveScene(const ColouredMap& map, const std::vector<mrpt::poses::CPose3D>& poses,
                const std::string& path);
 

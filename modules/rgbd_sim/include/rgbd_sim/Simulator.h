@@ -3,7 +3,9 @@
  * RGB-D sequences with exact ground truth: a Scene, a camera path (procedural sweep or replayed
  * real hand-held motion) and the Kinect model, written as a rawlog and/or a TUM folder. */
 #include <string>
+#include <vector>
 
+#include "rgbd_core/JobPaths.h"
 #include "rgbd_core/Params.h"
 #include "rgbd_core/Trajectory.h"
 #include "rgbd_io/RawlogWriter.h"
@@ -58,7 +60,13 @@ struct SimResult {
   Trajectory ground_truth;
 };
 
-/** Renders and writes the sequence. Throws for bad parameters or unwritable outputs. */
+/** The files and folders simulate() writes for `outputs`, named after rgbd-simulate's options,
+ * for checkJobPaths() against the inputs (motion file, configuration). */
+std::vector<JobPath> writtenFiles(const SimOutputs& outputs);
+
+/** Renders and writes the sequence. Throws for bad parameters or unwritable outputs. Every file
+ * is written in full or not at all (OutputFile.h); the rawlog's, the lists' and the ground
+ * truth's names appear only once the whole sequence is written. */
 SimResult simulate(const SimParams& params, const SimOutputs& outputs);
 
 }  // namespace hrgbd::sim

@@ -1,0 +1,74 @@
+#pragma once
+// Running the apps as the user runs them (tests/regression/App*_test.cpp).
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "TestData.h"
+
+namespace hrgbd::test {
+
+/** What a run of an app did. */
+struct Run {
+  int code = -1;
+  std::string out, err;
+};
+
+/** The whole content of a file ("" if it cannot be read). */
+inline std::string slurp(const std::filesystem::path& p) {
+  std::ifstream f(p, std::ios::binary);
+  std::stringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
+
+/** Runs `app` (a name in <build>/apps) with `args` (shell words) and captures its output. A run
+ * that should have been refused but starts the job is stopped after two minutes (exit 124). */
+inline Run runApp(const std::string& app, const std::string& args) {
+  static int runs = 0;  // ctest runs the tests in parallel processes: one folder per run
+  const std::filesystem::path dir =
+      tempDir("cli_capture_" + std::to_string(getpid()) + "_" + std::to_string(runs++));
+  const auto cmd = "timeout 120 " + std::string(HRGBD_BINARY_DIR) + "/apps/" + app + " " + args +
+                   " > " + (dir / "out").string() + " 2> " + (dir / "err").string() +
+                   " < /dev/null";
+  const int status = std::system(cmd.c_str());
+  Run r;
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.out = slurp(dir / "out");
+  r.err = slurp(dir / "err");
+  std::filesystem::remove_all(dir);
+  return r;
+}
+
+/** Expects exit 2 and "<app>: error: ..." on stderr, nothing on stdout. */
+inline Run expectRefused(const std::string& app, const std::string& args) {
+  const auto r = runApp(app, args);
+  EXPECT_EQ(r.code, 2) << app << " " << args << "\n" << r.out << r.err;
+  EXPECT_EQ(r.err.rfind(app + ": error: ", 0), 0u) << app << " " << args << "\n" << r.err;
+  EXPECT_NE(r.err.find(app + " --help"), std::string::npos) << r.err;
+  EXPECT_TRUE(r.out.empty()) << app << " " << args << "\n" << r.out;
+  return r;
+}
+
+/** Expects exit 1 (a runtime error, not a command-line one) and "<app>: error: ..." on stderr
+ * containing every one of `parts`. */
+inline Run expectFailure(const std::string& app, const std::string& args,
+                         const std::vector<std::string>& parts) {
+  const auto r = runApp(app, args);
+  EXPECT_EQ(r.code, 1) << app << " " << args << "\n" << r.out << r.err;
+  EXPECT_NE(r.err.find(app + ": error: "), std::string::npos) << app << " " << args << "\n"
+                                                              << r.err;
+  EXPECT_EQ(r.err.find(" --help"), std::string::npos) << "not a command-line error: " << r.err;
+  for (const auto& p : parts)
+    EXPECT_NE(r.err.find(p), std::string::npos) << app << " " << args << "\n" << r.err;
+  return r;
+}
+
+}  // namespace hrgbd::test
