@@ -43,6 +43,9 @@ std::unique_ptr<Registration> makeAnyRegistration(const OdometryParams& p,
     case Method::OpencvIcp:
     case Method::OpencvRgbdIcp:
       return makeOpenCvPeer(p.method);
+    case Method::Open3dColor:
+    case Method::Open3dHybrid:
+      return makeOpen3dPeer(p.method);
     default:
       return makeRegistration(p);
   }

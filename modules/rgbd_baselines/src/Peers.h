@@ -14,6 +14,9 @@ namespace hrgbd {
 /** OpenCV contrib's opencv_rgbd, opencv_icp or opencv_rgbd_icp (OpenCvPeer.cpp). */
 std::unique_ptr<Registration> makeOpenCvPeer(Method method);
 
+/** Open3D's open3d_color or open3d_hybrid (Open3dPeer.cpp). */
+std::unique_ptr<Registration> makeOpen3dPeer(Method method);
+
 /** What a peer made of a prepared frame (its own image types, pyramids), made once per frame:
  * a frame is the current one now and the reference next time. Frames are told apart by their
  * grey image's buffer, which the cache holds on to, so no other frame can be given that buffer
