@@ -3,7 +3,11 @@
 #include "rgbd_baselines/Baselines.h"
 
 #include <gtest/gtest.h>
+#include <omp.h>
 
+#include <opencv2/core/utility.hpp>
+
+#include "rgbd_baselines/ThreadLimit.h"
 #include "rgbd_io/RawlogSource.h"
 #include "rgbd_odometry/RgbdOdometry.h"
 
@@ -82,4 +86,17 @@ TEST(Baselines, ProductMethodsAreTheProductsRegistrations) {
   hrgbd::RgbdOdometry a(p), b(p, hrgbd::makeAnyRegistration(p, hrgbd::BaselineParams()));
   for (std::size_t i = 0; i < 3; ++i)
     EXPECT_EQ(a.processObservation(*d.frames[i]).pose, b.processObservation(*d.frames[i]).pose);
+}
+
+TEST(Baselines, ThreadLimitHoldsOpenCvAndOpenMpAndRestoresThem) {
+  const int cv_before = cv::getNumThreads(), omp_before = omp_get_max_threads();
+  omp_set_num_threads(3);  // a count of its own, so that restoring is seen
+  {
+    const hrgbd::ThreadLimit limit(1);
+    EXPECT_EQ(cv::getNumThreads(), 1);
+    EXPECT_EQ(omp_get_max_threads(), 1);
+  }
+  EXPECT_EQ(cv::getNumThreads(), cv_before);
+  EXPECT_EQ(omp_get_max_threads(), 3);
+  omp_set_num_threads(omp_before);
 }
