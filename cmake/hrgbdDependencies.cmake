@@ -1,6 +1,6 @@
 # The packages the hrgbd libraries link against. Included by the top-level CMakeLists.txt and by
 # the installed hrgbdConfig.cmake, so the build and its consumers resolve the same imported
-# targets (mrpt::*, opencv_*, Eigen3::Eigen, nanoflann::nanoflann, JPEG::JPEG,
+# targets (mrpt::*, opencv_*, Open3D::Open3D, Eigen3::Eigen, nanoflann::nanoflann, JPEG::JPEG,
 # PkgConfig::OPENNI2, ZLIB::ZLIB). The includer defines hrgbd_dependency(<find_package arguments>):
 # find_package(... REQUIRED) in the build, find_dependency() in the package config.
 hrgbd_dependency(mrpt-obs)
@@ -10,6 +10,8 @@ hrgbd_dependency(mrpt-hwdrivers)
 hrgbd_dependency(mrpt-gui)
 hrgbd_dependency(mrpt-slam)
 hrgbd_dependency(OpenCV 4 COMPONENTS core imgproc features2d imgcodecs calib3d rgbd)
+# Open3D's dense odometry (rgbd_baselines' open3d_* peers; 0.16 in Debian 12).
+hrgbd_dependency(Open3D)
 hrgbd_dependency(Eigen3 3.3 NO_MODULE)
 hrgbd_dependency(nanoflann)
 hrgbd_dependency(JPEG)

@@ -9,7 +9,10 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 OUT=${1:-trajectory-digest}
 BIN=${BIN:-build/apps/hybrid-rgbd-odometry}
-METHODS=${METHODS:-"hybrid rgb_only depth_only ransac ransac_icp opencv_rgbd opencv_icp opencv_rgbd_icp"}
+METHODS=${METHODS:-"hybrid rgb_only depth_only ransac ransac_icp opencv_rgbd opencv_icp opencv_rgbd_icp open3d_color open3d_hybrid"}
+# Open3D sums its OpenMP threads' partial results in whatever order they finish: repeatable on one
+# thread only.
+export OMP_NUM_THREADS=1
 mkdir -p "$OUT"
 inputs=(rawlogs/*.rawlog)
 if [ -d ../shared/data/real ]; then

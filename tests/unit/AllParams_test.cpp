@@ -198,7 +198,7 @@ void expectRoundTrip(const P& a, const std::string& section) {
 TEST(AllParams, SavedValuesLoadBackUnchanged) {
   using namespace hrgbd;
   OdometryParams odo;
-  odo.method = Method::OpencvRgbdIcp, odo.on_failure = FailurePolicy::Hold;
+  odo.method = Method::Open3dHybrid, odo.on_failure = FailurePolicy::Hold;
   odo.geometric_fallback = false, odo.max_step_translation = 0.25;
   odo.orb.n_features = 500, odo.geometric.is3d_T = 3.5, odo.msse.k_fraction = 0.2;
   expectRoundTrip(odo, "Odometry");

@@ -8,11 +8,11 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
-#include <opencv2/core.hpp>
 #include <sstream>
 #include <thread>
 
 #include "rgbd_app/AppConfig.h"
+#include "rgbd_baselines/ThreadLimit.h"
 #include "rgbd_core/Config.h"
 #include "rgbd_core/JobPaths.h"
 #include "rgbd_core/OutputFile.h"
@@ -157,13 +157,9 @@ void logRun(const BenchRun& run, std::ostream& log) {
 /** Every method on every sequence that is not skipped, on one core. */
 std::vector<BenchRun> runAll(const std::vector<BenchSequence>& sequences, const BenchmarkParams& p,
                              const std::string& config_file, std::ostream& log) {
-  // Every method on one core, as the targets are stated (OpenCV would use both otherwise); the
-  // caller's setting is restored however this returns.
-  struct OneThread {
-    int before = cv::getNumThreads();
-    OneThread() { cv::setNumThreads(1); }
-    ~OneThread() { cv::setNumThreads(before); }
-  } one_thread;
+  // Every method on one core, as the targets are stated (OpenCV and Open3D would use both
+  // otherwise); the caller's setting is restored however this returns.
+  const ThreadLimit one_thread(1);
   const auto traj_dir = fs::path(p.output_folder) / "trajectories";
   fs::create_directories(traj_dir);
   std::vector<BenchRun> runs;

@@ -180,7 +180,8 @@ std::string targets(const BenchmarkReport& r) {
     };
     const auto h = mean(r, "hybrid", ate, pick);
     if (!h) continue;
-    for (const auto* peer : {"opencv_rgbd", "opencv_icp", "opencv_rgbd_icp"}) {
+    for (const auto* peer :
+         {"opencv_rgbd", "opencv_icp", "opencv_rgbd_icp", "open3d_color", "open3d_hybrid"}) {
       const auto p = mean(r, peer, ate, pick);
       if (!has(peer) || !p) continue;
       out << "- " << (sim ? "simulated" : "real") << " average: hybrid " << fmt(h, 4) << " m vs "

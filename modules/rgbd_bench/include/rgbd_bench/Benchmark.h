@@ -1,9 +1,9 @@
 #pragma once
 /** \file Benchmark.h
  * Sequences x methods, as the paper's Tables I-III: every method of RgbdOdometry (ours, the
- * paper's baselines and the OpenCV contrib peers) runs through the same playback on the same
- * frames; the report gives ATE (unaligned mean, the paper's metric, and aligned RMSE), RPE,
- * time per frame, path shares and failures as markdown. `rgbd-benchmark` is a thin main. */
+ * paper's baselines and the peers of OpenCV contrib and Open3D) runs through the same playback on
+ * the same frames; the report gives ATE (unaligned mean, the paper's metric, and aligned RMSE),
+ * RPE, time per frame, path shares and failures as markdown. `rgbd-benchmark` is a thin main. */
 #include <iosfwd>
 #include <string>
 #include <vector>
@@ -17,8 +17,9 @@ namespace hrgbd {
 
 /** INI section [Benchmark]. Lists are separated by spaces; paths are relative to the INI. */
 struct BenchmarkParams : public Params<BenchmarkParams> {
-  std::vector<std::string> methods{"hybrid",     "rgb_only",    "depth_only", "ransac",
-                                   "ransac_icp", "opencv_rgbd", "opencv_icp", "opencv_rgbd_icp"};
+  std::vector<std::string> methods{"hybrid",       "rgb_only",     "depth_only", "ransac",
+                                   "ransac_icp",   "opencv_rgbd",  "opencv_icp", "opencv_rgbd_icp",
+                                   "open3d_color", "open3d_hybrid"};
   /** Simulated suite: these scene types (rgbd_sim::sceneTypes()), each near (~1 m) ... */
   std::vector<std::string> sim_scenes{"texture", "structure", "structure_texture", "desk", "wall"};
   /** ... and also far (~2 m) for texture, structure and structure_texture, as in Table I. */

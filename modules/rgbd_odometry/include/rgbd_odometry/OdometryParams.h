@@ -11,8 +11,9 @@
 
 namespace hrgbd {
 
-/** Registration methods: the paper's, its baselines (Tables I and II) and OpenCV contrib's dense
- * odometries as peers. INI key [Odometry] method, names below (MRPT_FILL_ENUM_CUSTOM_NAME). */
+/** Registration methods: the paper's, its baselines (Tables I and II) and the dense odometries
+ * of OpenCV contrib and Open3D as peers. INI key [Odometry] method, names below
+ * (MRPT_FILL_ENUM_CUSTOM_NAME). */
 enum class Method {
   Hybrid,     //!< ORB + MSSE; geometric features when too few ORB features (paper), see
               //!< min_photometric_inliers and geometric_fallback for the additions
@@ -20,10 +21,12 @@ enum class Method {
   DepthOnly,  //!< geometric (IS3D + SHOT) + MSSE always
   Ransac,     //!< ORB + RANSAC
   RansacIcp,  //!< ORB + RANSAC, refined by ICP on ~15,000 points
-  // Peers: OpenCV contrib's dense frame-to-frame odometries, fed the same prepared frames
+  // Peers: dense frame-to-frame odometries of other libraries, fed the same prepared frames
   OpencvRgbd,     //!< cv::rgbd::RgbdOdometry (photometric, dense)
   OpencvIcp,      //!< cv::rgbd::ICPOdometry (point-to-plane on the depth)
   OpencvRgbdIcp,  //!< cv::rgbd::RgbdICPOdometry (both)
+  Open3dColor,    //!< Open3D's ComputeRGBDOdometry, photometric term
+  Open3dHybrid,   //!< Open3D's ComputeRGBDOdometry, photometric + depth term
 };
 /** The method named `name` (INI and command-line spelling, e.g. "rgb_only"); throws ConfigError
  * listing the names otherwise. */
@@ -53,6 +56,8 @@ MRPT_FILL_ENUM_CUSTOM_NAME(hrgbd::Method::RansacIcp, "ransac_icp");
 MRPT_FILL_ENUM_CUSTOM_NAME(hrgbd::Method::OpencvRgbd, "opencv_rgbd");
 MRPT_FILL_ENUM_CUSTOM_NAME(hrgbd::Method::OpencvIcp, "opencv_icp");
 MRPT_FILL_ENUM_CUSTOM_NAME(hrgbd::Method::OpencvRgbdIcp, "opencv_rgbd_icp");
+MRPT_FILL_ENUM_CUSTOM_NAME(hrgbd::Method::Open3dColor, "open3d_color");
+MRPT_FILL_ENUM_CUSTOM_NAME(hrgbd::Method::Open3dHybrid, "open3d_hybrid");
 MRPT_ENUM_TYPE_END()
 
 MRPT_ENUM_TYPE_BEGIN(hrgbd::FailurePolicy)
@@ -65,7 +70,7 @@ namespace hrgbd {
 /** Parameters of RgbdOdometry. INI section [Odometry]; the stages read [ORB], [Geometric],
  * [MSSE] and [Dense]. The baselines' [RANSAC] and [ICP] are BaselineParams (rgbd_baselines). */
 struct OdometryParams : public Params<OdometryParams> {
-  Method method = Method::Hybrid;  //!< registration method (all eight listed in Method)
+  Method method = Method::Hybrid;  //!< registration method (all listed in Method)
   int min_orb_features = 50;       //!< [count] fewer ORB features with depth -> geometric path
   /** [count] hybrid only: a photometric registration with fewer inliers is replaced by the
    * geometric path's when that registers (not in the paper; 0 = off). Measured: every good
