@@ -182,7 +182,7 @@ TEST(MapSinks, WriteFailuresAreErrorsAndUnfinishedFilesDoNotAppear) {
   hrgbd::RawlogSource src(kDesk);
   const auto obs = src.next();
   std::ostringstream log;
-  for (const hrgbd::MapFiles files : {hrgbd::MapFiles{"/dev/full", ""}, {"", "/dev/full"}}) {
+  for (const hrgbd::MapFiles& files : {hrgbd::MapFiles{"/dev/full", ""}, {"", "/dev/full"}}) {
     hrgbd::ColouredMapSink map(hrgbd::MapParams(), files);
     map.add(*obs, result(1, 0, kOk));
     EXPECT_THROW(map.finish(log), std::runtime_error) << files.ply << files.scene;

@@ -35,7 +35,11 @@ TEST(PaperPreset, DiffersFromTheDefaultsInThePapersSwitchesOnly) {
                       {"Odometry", "geometric_fallback"},
                       {"Geometric", "refine_iterations"},
                       {"Dense", "enabled"},
-                      {"Playback", "input"}};
+                      {"Playback", "input"},  // paths relative to the file
+                      {"Benchmark", "sim_motions"},
+                      {"Benchmark", "real_sequences"},
+                      {"Benchmark", "cache_folder"},
+                      {"Benchmark", "output_folder"}};
   EXPECT_EQ(differences(defaults, paper), expected);
 
   hrgbd::OdometryParams p;

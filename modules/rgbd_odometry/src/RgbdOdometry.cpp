@@ -100,12 +100,11 @@ FrameResult RgbdOdometry::track(const mrpt::obs::CObservation3DRangeScan& obs) {
   auto reg = m_registration->align(cur, m_ref->frame);
   report(reg, r);
   if (!reg.ok()) return predict(std::move(r), reg.status, reg.detail);
-  // Line 16: G_n = G_ref T (eq. 8), unless the step from the last pose is implausible; this frame
-  // becomes the reference, or, tracking against a keyframe, when the keyframe wears out.
-  const mrpt::poses::CPose3D pose = m_ref->pose + toPose(reg.T);
-  if (auto why = implausible(toIsometry(pose - m_pose)))
+  if (auto why = implausible(reg.T))
     return predict(std::move(r), FrameResult::Status::ImplausibleMotion, std::move(*why));
-  return accept(std::move(cur), pose, std::move(r), newKeyframe(reg));
+  // Line 16: G_n = G_ref T (eq. 8); this frame becomes the reference, or, tracking against a
+  // keyframe, when the keyframe wears out.
+  return accept(std::move(cur), m_ref->pose + toPose(reg.T), std::move(r), newKeyframe(reg));
 }
 
 std::optional<std::string> RgbdOdometry::implausible(const Eigen::Isometry3d& T) const {
