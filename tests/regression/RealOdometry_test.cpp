@@ -16,21 +16,25 @@ struct Bound {
   double ate_rmse, ate_unaligned;  // [m] measured
 };
 
-// Aligned ATE RMSE and unaligned mean ATE measured on this machine with config.ini's defaults;
-// the test allows 30 % + 2 mm above them.
+// Aligned ATE RMSE and unaligned mean ATE measured on this machine with config.ini's defaults
+// (the product's methods with the dense refinement and keyframes; before them hybrid gave 0.0504
+// on teddy, depth_only 0.3665); the test allows 30 % + 2 mm above them.
 const Bound kBounds[] = {
-    {"tum_fr1_desk_9frames", "hybrid", 0.0037, 0.0073},
-    {"tum_fr1_desk_9frames", "rgb_only", 0.0037, 0.0073},
+    {"tum_fr1_desk_9frames", "hybrid", 0.0031, 0.0086},
+    {"tum_fr1_desk_9frames", "rgb_only", 0.0031, 0.0086},
     {"tum_fr1_desk_9frames", "ransac", 0.0043, 0.0100},
     {"tum_fr1_desk_9frames", "ransac_icp", 0.0030, 0.0126},
-    {"tum_fr3_teddy_200frames", "hybrid", 0.0504, 0.0869},
-    {"tum_fr3_teddy_200frames", "rgb_only", 0.0504, 0.0869},
+    {"tum_fr3_teddy_200frames", "hybrid", 0.0099, 0.0130},
+    {"tum_fr3_teddy_200frames", "rgb_only", 0.0099, 0.0130},
     {"tum_fr3_teddy_200frames", "ransac", 0.0464, 0.0947},
     {"tum_fr3_teddy_200frames", "ransac_icp", 0.4006, 0.8998},
-    {"tum_fr1_desk_9frames", "depth_only", 0.0026, 0.0139},
-    {"tum_fr3_teddy_200frames", "depth_only", 0.3665, 0.8380},
-    {"tum_fr3_cabinet_58keyframes", "hybrid", 0.7490, 1.6342},
-    {"tum_fr3_cabinet_58keyframes", "depth_only", 1.0297, 2.1180},
+    {"tum_fr1_desk_9frames", "depth_only", 0.0031, 0.0086},
+    {"tum_fr3_teddy_200frames", "depth_only", 0.0102, 0.0129},
+    {"tum_fr3_cabinet_58keyframes", "hybrid", 0.1096, 0.1248},
+    {"tum_fr3_cabinet_58keyframes", "depth_only", 0.8236, 1.1083},
+    // the fast rotation and the real plain structure
+    {"tum_fr1_rpy_240frames", "hybrid", 0.0263, 0.0434},
+    {"tum_fr3_structure_notexture_far_130frames", "hybrid", 0.0049, 0.0062},
     // The peers. opencv_rgbd on teddy: 0.0582 / 0.0796 when unknown depth reached OpenCV as 0.
     {"tum_fr1_desk_9frames", "opencv_rgbd", 0.0035, 0.0120},
     {"tum_fr1_desk_9frames", "opencv_icp", 0.0018, 0.0094},
