@@ -138,3 +138,19 @@ TEST(DenseRefinement, UnknownDepthNeverBlendsIntoTheCoarserLevels) {
   EXPECT_FLOAT_EQ(half.at<float>(3, 3), 1.0f);  // the nearest surface, not a blend with 3 m
   EXPECT_TRUE(std::isnan(pyr.levels[0].depth.at<float>(4, 4)));
 }
+
+TEST(DenseRefinement, TinyImagesGiveFewerLevelsAndNoRefinement) {
+  hrgbd::RgbdImage f;
+  f.grey = cv::Mat(3, 3, CV_8U, cv::Scalar(100));
+  f.depth = cv::Mat(3, 3, CV_32F, cv::Scalar(1.0f));
+  f.cam = {2, 2, 1, 1, 3, 3};
+  const auto pyr = hrgbd::buildDensePyramid(f, hrgbd::DenseParams());  // finest level 1 of 4
+  EXPECT_TRUE(pyr.levels.empty());
+  const auto d = hrgbd::refineDense(pyr, pyr, {Isometry3d::Identity()}, hrgbd::DenseParams());
+  EXPECT_FALSE(d.ok);
+  hrgbd::DenseParams p;
+  p.finest_level = 0;
+  const auto one = hrgbd::buildDensePyramid(f, p);
+  ASSERT_EQ(one.levels.size(), 1u);
+  EXPECT_FALSE(hrgbd::refineDense(one, one, {Isometry3d::Identity()}, p).ok);  // 9 < min_pixels
+}

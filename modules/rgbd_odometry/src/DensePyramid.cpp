@@ -81,6 +81,7 @@ DensePyramid buildDensePyramid(const RgbdImage& image, const DenseParams& params
   DensePyramid pyramid;
   for (int l = 0; l < params.levels; ++l) {
     if (l > 0) {
+      if (level.depth.cols < 4 || level.depth.rows < 4) break;  // tiny images: fewer levels
       cv::resize(level.grey, level.grey, cv::Size(level.depth.cols / 2, level.depth.rows / 2), 0, 0,
                  cv::INTER_AREA);
       level.depth = halveDepth(level.depth);
