@@ -76,9 +76,10 @@ void BM_Ransac(benchmark::State& s) {  // the baseline estimator, same data, sam
 }
 // A fresh odometry on frame 0 (the reference), then the registration of frame 1.
 void twoFrames(benchmark::State& s, const char* method,
-               const mrpt::obs::CObservation3DRangeScan::Ptr (&obs)[2]) {
+               const mrpt::obs::CObservation3DRangeScan::Ptr (&obs)[2], bool dense = true) {
   OdometryParams p;
   p.method = parseMethod(method);
+  p.dense.enabled = dense;
   for (auto _ : s) {
     RgbdOdometry odo(p);
     odo.processObservation(*obs[0]);
@@ -87,6 +88,20 @@ void twoFrames(benchmark::State& s, const char* method,
   s.SetLabel("two frames: reference + one registration");
 }
 void BM_WholeFrame(benchmark::State& s) { twoFrames(s, "rgb_only", pair().obs); }
+// The same without the dense refinement (the paper's photometric path): the refinement's share.
+void BM_WholeFrameSparseOnly(benchmark::State& s) { twoFrames(s, "rgb_only", pair().obs, false); }
+void BM_DensePyramid(benchmark::State& s) {
+  for (auto _ : s) benchmark::DoNotOptimize(buildDensePyramid(pair().img[1], DenseParams()));
+}
+// The refinement of the sparse MSSE estimate (one start).
+void BM_DenseRefine(benchmark::State& s) {
+  const DenseParams p;
+  const auto cur = buildDensePyramid(pair().img[1], p), ref = buildDensePyramid(pair().img[0], p);
+  const auto start = estimateMsse(pair().corr, MsseParams()).T;
+  DenseResult d;
+  for (auto _ : s) benchmark::DoNotOptimize(d = refineDense(cur, ref, {start}, p));
+  s.counters["iterations"] = d.iterations;
+}
 
 // Geometric path (paper III-C to III-G) on two frames of the plain zig-zag.
 struct GeometricPair {
@@ -173,6 +188,9 @@ BENCHMARK(BM_MutualMatching)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Msse)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Ransac)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_WholeFrame)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_WholeFrameSparseOnly)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_DensePyramid)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_DenseRefine)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Downsample)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Normals)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Is3d)->Unit(benchmark::kMillisecond);
