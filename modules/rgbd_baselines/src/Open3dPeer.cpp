@@ -43,7 +43,6 @@ class Open3dPeer : public Registration {
     r.seen = {"dense", 0, 0, {}};
     auto source = timed(r.seen.ms.features, [&] { return rgbdImage(cur); });
     auto target = timed(r.seen.ms.features, [&] { return rgbdImage(ref); });
-    m_images.keepOnly(cur, ref);
     const auto& c = cur.image.cam;
     const o3d::camera::PinholeCameraIntrinsic K(cur.image.grey.cols, cur.image.grey.rows, c.fx,
                                                 c.fy, c.cx, c.cy);
@@ -73,8 +72,8 @@ class Open3dPeer : public Registration {
   // Open3D's RGBDImage of a frame, as CreateFromTUMFormat makes it: intensity in [0, 1] (from the
   // prepared grey, which has Open3D's RGB weights, rounded to 8 bits), depth in metres cut at
   // 4 m (OdometryOption's depth_max, which the odometry applies anyway), 0 = unknown.
-  Image rgbdImage(const Frame& frame) {
-    return m_images.get(frame, [&](const Frame& f) {
+  Image rgbdImage(Frame& frame) {
+    return peerData<Image>(frame, [&](const Frame& f) {
       return o3d::geometry::RGBDImage::CreateFromColorAndDepth(
           toOpen3d(f.image.grey, 1), toOpen3d(f.image.depth, 4), 1.0 /* already metres */,
           m_option.depth_max_, true);
@@ -83,7 +82,6 @@ class Open3dPeer : public Registration {
 
   Method m_method;
   odo::OdometryOption m_option;
-  PeerFrameCache<Image> m_images;
 };
 
 }  // namespace

@@ -37,7 +37,6 @@ class OpenCvPeer : public Registration {
     r.seen = {"dense", 0, 0, {}};
     auto src = timed(r.seen.ms.features, [&] { return odometryFrame(cur); });
     auto dst = timed(r.seen.ms.features, [&] { return odometryFrame(ref); });
-    m_frames.keepOnly(cur, ref);
     cv::Mat Rt;  // maps source (current) points into the destination (reference) frame
     const bool ok = timed(r.seen.ms.estimation, [&] { return m_odometry->compute(src, dst, Rt); });
     if (!ok || Rt.empty()) {
@@ -51,9 +50,9 @@ class OpenCvPeer : public Registration {
   }
 
  private:
-  cv::Ptr<cv::rgbd::OdometryFrame> odometryFrame(const Frame& frame) {
+  cv::Ptr<cv::rgbd::OdometryFrame> odometryFrame(Frame& frame) {
     if (!m_odometry) m_odometry = make(frame.image.cam);  // needs the intrinsics
-    return m_frames.get(frame, [&](const Frame& f) {
+    return peerData<cv::Ptr<cv::rgbd::OdometryFrame>>(frame, [&](const Frame& f) {
       auto of = cv::rgbd::OdometryFrame::create(f.image.grey, depthWithNaN(f.image.depth));
       m_odometry->prepareFrameCache(of, cv::rgbd::OdometryFrame::CACHE_ALL);
       return of;
@@ -69,7 +68,6 @@ class OpenCvPeer : public Registration {
 
   Method m_method;
   cv::Ptr<cv::rgbd::Odometry> m_odometry;
-  PeerFrameCache<cv::Ptr<cv::rgbd::OdometryFrame>> m_frames;
 };
 
 }  // namespace

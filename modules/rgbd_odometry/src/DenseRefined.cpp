@@ -6,17 +6,11 @@
 namespace hrgbd {
 namespace {
 
-bool withinCorrection(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b,
-                      const DenseParams& p) {
+// Whether b is within `metres` and `deg` of a.
+bool near(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b, double metres, double deg) {
   const Eigen::Isometry3d d = a.inverse() * b;
-  return d.translation().norm() <= p.max_correction &&
-         mrpt::RAD2DEG(Eigen::AngleAxisd(d.rotation()).angle()) <= p.max_correction_deg;
-}
-
-// Within 1 cm and 1 degree: one refinement serves both.
-bool agree(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b) {
-  const Eigen::Isometry3d d = a.inverse() * b;
-  return d.translation().norm() <= 0.01 && Eigen::AngleAxisd(d.rotation()).angle() <= 0.0175;
+  return d.translation().norm() <= metres &&
+         mrpt::RAD2DEG(Eigen::AngleAxisd(d.rotation()).angle()) <= deg;
 }
 
 }  // namespace
@@ -36,8 +30,9 @@ RegistrationResult DenseRefined::align(Frame& cur, Frame& ref) {
   if (!ref.dense) prepare(ref);
   std::vector<Eigen::Isometry3d> starts;
   if (r.ok()) starts.push_back(r.T);
-  // the prediction competes with the sparse estimate when they disagree
-  if (cur.guess && (starts.empty() || !agree(starts[0], *cur.guess))) starts.push_back(*cur.guess);
+  // the prediction competes with the sparse estimate when they disagree (beyond 1 cm, 1 deg)
+  if (cur.guess && (starts.empty() || !near(starts[0], *cur.guess, 0.01, 1.0)))
+    starts.push_back(*cur.guess);
   if (starts.empty()) return r;
   const DenseResult d = timed(
       r.seen.ms.refine, [&] { return refineDense(*cur.dense, *ref.dense, starts, m_params); });
@@ -51,7 +46,7 @@ RegistrationResult DenseRefined::align(Frame& cur, Frame& ref) {
                 std::to_string(d.normal_spread) + ")";
     return r;
   }
-  if (!withinCorrection(starts[d.start], d.T, m_params)) {
+  if (!near(starts[d.start], d.T, m_params.max_correction, m_params.max_correction_deg)) {
     r.status = FrameResult::Status::LargeResiduals;
     r.detail = "dense refinement moved the start too far: neither estimate is trusted";
     return r;

@@ -6,6 +6,7 @@
  * HybridRegistration policy over both; the baselines and peers (library rgbd_baselines) are
  * further implementations. */
 #include <Eigen/Geometry>
+#include <any>
 #include <memory>
 #include <optional>
 #include <string>
@@ -25,6 +26,9 @@ struct Frame {
   std::optional<FeatureSet> orb;               //!< ORB features with depth (III-B)
   std::optional<GeometricFeatures> geometric;  //!< IS3D + SHOT (III-C to III-F)
   std::optional<DensePyramid> dense;           //!< pyramids of the dense refinement
+  /** What a registration of another library made of this frame, in its own types (a peer's
+   * pyramids or image): made once, the frame being the current one now and the reference next. */
+  std::any peer;
   /** The tracker's prediction of the motion to the reference (constant velocity), when it has
    * one: the start of a dense registration when no sparse estimate exists. */
   std::optional<Eigen::Isometry3d> guess;
