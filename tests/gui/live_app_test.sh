@@ -32,3 +32,19 @@ echo "colours: 3D view $view, image inset $inset"
 points=$(grep -a -m1 '^element vertex' "$out/live_map.ply" | cut -d' ' -f3)
 [ "$points" -gt 5000 ] || { echo "FAIL: saved map has $points points"; exit 1; }
 echo "PASS: map drawn, inset drawn, $points points saved"
+
+# SLAM mode on real frames that revisit (skipped without ../shared/data): loops are found, shown
+# and saved with the map.
+teddy="$src/../shared/data/real/tum_fr3_teddy_200frames"
+if [ ! -d "$teddy" ]; then echo "SKIP (SLAM part): $teddy not found"; exit 0; fi
+cat > "$out/slam.sh" <<INNER
+"$app" -c "$src/config.ini" -i "$teddy" --slam -n 60 --rate 0 --hold 1 \
+  --save-prefix "$out/slam_" > "$out/slam.log" 2>&1
+INNER
+xvfb-run -a -s "-screen 0 1280x800x24" bash "$out/slam.sh"
+cat "$out/slam.log"
+loops=$(sed -n 's/.* \([0-9]*\) loops accepted.*/\1/p' "$out/slam.log")
+[ "${loops:-0}" -gt 0 ] || { echo "FAIL: no loop accepted in SLAM mode"; exit 1; }
+zcat -f "$out/slam_map.3Dscene" | grep -aq "loop closures" ||
+  { echo "FAIL: the saved .3Dscene has no loop closures"; exit 1; }
+echo "PASS: SLAM mode, $loops loops accepted and saved"

@@ -39,7 +39,8 @@ TEST(PaperPreset, DiffersFromTheDefaultsInThePapersSwitchesOnly) {
                       {"Benchmark", "sim_motions"},
                       {"Benchmark", "real_sequences"},
                       {"Benchmark", "cache_folder"},
-                      {"Benchmark", "output_folder"}};
+                      {"Benchmark", "output_folder"},
+                     {"Benchmark", "paper_config"}};
   EXPECT_EQ(differences(defaults, paper), expected);
 
   hrgbd::OdometryParams p;

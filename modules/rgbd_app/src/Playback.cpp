@@ -42,6 +42,14 @@ PlaybackJob resolveJob(const PlaybackOptions& opt) {
   if (!opt.method.empty()) job.odometry.method = parseMethod(opt.method);
   job.slam.loadFromConfigFile(*job.cfg, "Slam");
   if (opt.slam) job.slam.enabled = true;
+  // the SLAM mode verifies loops with the product's registration: the baselines and peers run
+  // as published (an explicit --slam with one of them is a usage error)
+  if (job.slam.enabled && !isProductMethod(job.odometry.method)) {
+    if (opt.slam)
+      throw UsageError(std::string("--slam needs method hybrid, rgb_only or depth_only, not ") +
+                       toString(job.odometry.method));
+    job.slam.enabled = false;
+  }
   auto pick = [](const std::string& cli, const std::string& ini) {
     return cli.empty() ? ini : cli;
   };

@@ -100,6 +100,13 @@ std::vector<BenchSequence> prepareSequences(const BenchmarkParams& p,
   return out;
 }
 
+std::vector<std::string> benchmarkMethods() {
+  auto names = enumNameList<Method>();
+  names.push_back("hybrid_slam");
+  names.push_back("hybrid_paper");
+  return names;
+}
+
 namespace {
 
 /** [Benchmark] from `config_file`, its paths resolved against the file's folder. */
@@ -110,6 +117,7 @@ BenchmarkParams loadBenchmarkParams(const std::string& config_file) {
   const auto base = fs::path(config_file).parent_path().string();
   p.cache_folder = resolvePath(base, p.cache_folder);
   p.output_folder = resolvePath(base, p.output_folder);
+  p.paper_config = resolvePath(base, p.paper_config);
   for (auto& m : p.sim_motions)
     if (m != "sweep") m = resolvePath(base, m);
   for (auto& r : p.real_sequences) r = resolvePath(base, r);
@@ -119,7 +127,7 @@ BenchmarkParams loadBenchmarkParams(const std::string& config_file) {
 /** One sequence x method through runPlayback(), writing <traj_dir>/<sequence>__<method>.txt
  * and .csv. An error is recorded in the run, not thrown. */
 BenchRun runOne(const BenchSequence& seq, const std::string& method, const std::string& config_file,
-                const fs::path& traj_dir, int max_frames) {
+                const fs::path& traj_dir, const BenchmarkParams& p) {
   BenchRun run{seq.name, method, {}, ""};
   auto stem = seq.name + "__" + method;
   std::replace(stem.begin(), stem.end(), '/', '_');
@@ -129,7 +137,9 @@ BenchRun runOne(const BenchSequence& seq, const std::string& method, const std::
   opt.trajectory = (traj_dir / (stem + ".txt")).string();
   opt.csv = (traj_dir / (stem + ".csv")).string();
   opt.method = method;
-  opt.max_frames = max_frames;
+  if (method == "hybrid_slam") opt.method = "hybrid", opt.slam = true;
+  if (method == "hybrid_paper") opt.method = "hybrid", opt.config = p.paper_config;
+  opt.max_frames = p.max_frames;
   opt.progress = false;
   opt.ini_outputs = false;
   std::ostringstream playback_log;
@@ -169,7 +179,7 @@ std::vector<BenchRun> runAll(const std::vector<BenchSequence>& sequences, const 
       continue;
     }
     for (const auto& method : p.methods) {
-      runs.push_back(runOne(seq, method, config_file, traj_dir, p.max_frames));
+      runs.push_back(runOne(seq, method, config_file, traj_dir, p));
       logRun(runs.back(), log);
     }
   }

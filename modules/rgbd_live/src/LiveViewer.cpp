@@ -144,10 +144,10 @@ void LiveViewer::update(const mrpt::obs::CObservation3DRangeScan& obs, const Fra
   m_win->unlockAccess3DScene();
 
   char line[256];
-  std::snprintf(line, sizeof line,
-                "frame %zu  path %s  %s  inliers %zu/%zu  %.1f fps  map %zu pts%s", path.size(),
-                r.path.c_str(), toString(r.status), r.inliers, r.matches, fps, pts.size(),
-                m_loop_count ? ("  loops " + std::to_string(m_loop_count)).c_str() : "");
+  std::snprintf(line, sizeof line, "frame %zu%s  path %s  %s  inliers %zu/%zu  %.1f fps  map %zu pts",
+                path.size(),
+                m_loop_count ? ("  loops " + std::to_string(m_loop_count)).c_str() : "",
+                r.path.c_str(), toString(r.status), r.inliers, r.matches, fps, pts.size());
   m_win->addTextMessage(10, -40, line, 1,
                         font(r.registered() ? mrpt::img::TColorf(0.3f, 1.f, 0.3f)
                                             : mrpt::img::TColorf(1.f, 0.3f, 0.3f)));

@@ -27,6 +27,12 @@ mrpt::math::CMatrixDouble66 fitInformation(const SlamParams& p, std::size_t inli
   return edgeInformation(sigma, sigma / kLever);
 }
 
+/** The tracking's parameters with the loops' weight of the point-to-plane term. */
+OdometryParams loopRegistration(OdometryParams odometry, const SlamParams& p) {
+  odometry.dense.geometric_weight = p.loop_geometric_weight;
+  return odometry;
+}
+
 }  // namespace
 
 std::string toText(const SlamStats& s) {
@@ -40,7 +46,7 @@ std::string toText(const SlamStats& s) {
 }
 
 KeyframeSlam::KeyframeSlam(const SlamParams& params, const OdometryParams& odometry)
-    : m_params(params), m_odometry(odometry), m_registration(makeRegistration(odometry)) {
+    : m_params(params), m_odometry(odometry), m_registration(makeRegistration(loopRegistration(odometry, params))) {
   if (m_params.background) m_thread = std::thread([this] { work(); });
 }
 
@@ -232,7 +238,10 @@ SlamPoses KeyframeSlam::poses() const {
     return mrpt::poses::CPose3D();
   };
   SlamPoses out;
-  for (const auto& p : m_places) out.poses.push_back(keyframe(p.keyframe) + p.relative);
+  // re-orthonormalised (toPose()): the optimiser's nodes drift off SO(3) by rounding, and
+  // CPose3D's angles and matrix then disagree
+  for (const auto& p : m_places)
+    out.poses.push_back(toPose(toIsometry(keyframe(p.keyframe) + p.relative)));
   for (const auto& e : loops) {
     out.loops.emplace_back(m_keyframe_frame.at(e.from), m_keyframe_frame.at(e.to));
     out.loop_measured.push_back(e.relative);
@@ -258,7 +267,7 @@ void KeyframeSlam::reset() {
   m_stop = m_busy = false;
   m_applied = m_optimizations = 0;
   m_stats = SlamStats();
-  m_registration = makeRegistration(m_odometry);
+  m_registration = makeRegistration(loopRegistration(m_odometry, m_params));
   if (m_params.background) m_thread = std::thread([this] { work(); });
 }
 

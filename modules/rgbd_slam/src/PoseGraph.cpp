@@ -8,6 +8,7 @@
 
 #include "rgbd_core/OutputFile.h"
 #include "rgbd_core/Timing.h"
+#include "rgbd_odometry/RigidFit.h"
 
 namespace hrgbd {
 
@@ -71,7 +72,9 @@ PoseGraphOptimization PoseGraph::optimize(double max_chi2, int max_iterations) {
       mrpt::graphslam::TResultInfoSpaLevMarq info;
       mrpt::graphslam::optimize_graph_spa_levmarq(g, info, nullptr, extra);
       out.iterations += info.num_iters;
-      for (std::size_t i = 0; i < m_poses.size(); ++i) m_poses[i] = g.nodes.at(i);
+      // re-orthonormalised: the optimiser's compositions drift off SO(3) by rounding
+      for (std::size_t i = 0; i < m_poses.size(); ++i)
+        m_poses[i] = toPose(toIsometry(g.nodes.at(i)));
       // the least consistent loop edge, if beyond the limit, goes; then optimise again
       std::size_t worst = m_edges.size();
       double worst_chi2 = 0;

@@ -15,6 +15,11 @@
 
 namespace hrgbd {
 
+/** The benchmark's method names: every [Odometry] method, and two variants of hybrid:
+ * `hybrid_slam` (SLAM mode) and `hybrid_paper` (the configuration `paper_config`, the paper's
+ * pipeline as published). */
+std::vector<std::string> benchmarkMethods();
+
 /** INI section [Benchmark]. Lists are separated by spaces; paths are relative to the INI. */
 struct BenchmarkParams : public Params<BenchmarkParams> {
   std::vector<std::string> methods{"hybrid",       "rgb_only",     "depth_only", "ransac",
@@ -34,10 +39,12 @@ struct BenchmarkParams : public Params<BenchmarkParams> {
   int max_frames = 0;                            //!< [count] per run, 0 = all
   std::string cache_folder = "benchmark_cache";  //!< rendered simulated sequences (reused)
   std::string output_folder = "benchmark";       //!< results.md, results.csv, trajectories
+  std::string paper_config = "config/paper.ini";  //!< the configuration of `hybrid_paper`
 
   template <class P, class V>
   static void declare(P& p, V& v) {
-    HRGBD_PARAM(methods, "any of [Odometry] method", OneOf{enumNameList<Method>()}, NonEmpty{});
+    HRGBD_PARAM(methods, "any of [Odometry] method, hybrid_slam, hybrid_paper",
+                OneOf{benchmarkMethods()}, NonEmpty{});
     HRGBD_PARAM(sim_scenes, "scene types, each near (~1 m)", OneOf{sim::sceneTypes()});
     HRGBD_PARAM(sim_far, "also far (~2 m) texture, structure, structure_texture");
     HRGBD_PARAM(sim_motions, "sweep and/or TUM trajectory files to replay");
@@ -48,6 +55,7 @@ struct BenchmarkParams : public Params<BenchmarkParams> {
     HRGBD_PARAM(max_frames, "[count] per run, 0 = all", Range::atLeast(0));
     HRGBD_PARAM(cache_folder, "rendered simulated sequences");
     HRGBD_PARAM(output_folder, "results.md, results.csv, trajectories");
+    HRGBD_PARAM(paper_config, "configuration of the method hybrid_paper");
   }
 };
 
