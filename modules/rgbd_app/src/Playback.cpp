@@ -180,6 +180,11 @@ PlaybackSummary runPlayback(const PlaybackOptions& opt, std::ostream& log) {
   auto inputs = source->inputs();
   inputs.push_back({opt.config, "the configuration file (--config)"});
   checkJobPaths(inputs, job.written);
+  try {
+    if (!opt.plot.empty()) checkPlotPath(opt.plot, "--plot");  // before the run, not after it
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
+  }
   log << "input: " << source->describe() << "\nmethod: " << toString(job.odometry.method) << "\n";
 
   const auto sinks = makeSinks(job, *source, opt.progress && isatty(STDERR_FILENO));

@@ -16,6 +16,7 @@
 #include "rgbd_core/Config.h"
 #include "rgbd_core/JobPaths.h"
 #include "rgbd_core/OutputFile.h"
+#include "rgbd_eval/EvalPlot.h"
 #include "rgbd_io/RawlogSource.h"
 #include "rgbd_sim/Scene.h"
 #include "rgbd_sim/Simulator.h"
@@ -204,6 +205,35 @@ void checkResultPaths(const BenchmarkParams& p, const std::string& config_file,
                          {results(p, "results.csv"), "[Benchmark] output_folder's results.csv"}});
 }
 
+/** One figure per real sequence that ran: every evaluated method against its ground truth. */
+std::vector<BenchFigure> plotRealSequences(const BenchmarkReport& report, const BenchmarkParams& p,
+                                           std::ostream& log) {
+  std::vector<BenchFigure> figures;
+  for (const auto& seq : report.sequences) {
+    if (!seq.scene_type.empty() || !seq.skip_reason.empty()) continue;
+    auto stem = seq.name;
+    std::replace(stem.begin(), stem.end(), '/', '_');
+    BenchFigure fig{seq.name, "plots/" + stem + ".png", ""};
+    std::vector<PlotSeries> series;
+    for (const auto& run : report.runs)
+      if (run.sequence == seq.name && run.error.empty() && run.summary.evaluated)
+        series.push_back({run.method, &run.summary.eval});
+    try {
+      if (series.empty()) throw std::runtime_error("no method was evaluated");
+      fs::create_directories(fs::path(p.output_folder) / "plots");
+      PlotParams pp;
+      pp.title = seq.name + ": every method against the ground truth";
+      plotEvaluations(series, results(p, fig.file), pp);
+      log << "figure: " << results(p, fig.file) << "\n";
+    } catch (const std::exception& e) {
+      fig.error = e.what();
+      log << seq.name << ": no figure: " << fig.error << "\n";
+    }
+    figures.push_back(fig);
+  }
+  return figures;
+}
+
 }  // namespace
 
 BenchmarkReport runBenchmark(const std::string& config_file, const std::vector<std::string>& extra,
@@ -218,6 +248,7 @@ BenchmarkReport runBenchmark(const std::string& config_file, const std::vector<s
   report.date = today();
   report.sequences = prepareSequences(p, extra, log);
   report.runs = runAll(report.sequences, p, config_file, log);
+  report.figures = plotRealSequences(report, p, log);
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   StreamOutput markdown(results(p, "results.md"), "benchmark results");
