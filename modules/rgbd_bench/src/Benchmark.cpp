@@ -120,7 +120,7 @@ BenchmarkParams loadBenchmarkParams(const std::string& config_file) {
 /** One sequence x method through runPlayback(), writing <traj_dir>/<sequence>__<method>.txt
  * and .csv. An error is recorded in the run, not thrown. */
 BenchRun runOne(const BenchSequence& seq, const std::string& method, const std::string& config_file,
-                const fs::path& traj_dir, int max_frames) {
+                const fs::path& traj_dir, int max_frames, bool progress) {
   BenchRun run{seq.name, method, {}, ""};
   auto stem = seq.name + "__" + method;
   std::replace(stem.begin(), stem.end(), '/', '_');
@@ -131,7 +131,8 @@ BenchRun runOne(const BenchSequence& seq, const std::string& method, const std::
   opt.csv = (traj_dir / (stem + ".csv")).string();
   opt.method = method;
   opt.max_frames = max_frames;
-  opt.progress = false;
+  opt.progress = progress;
+  opt.progress_label = seq.name + " " + method;
   opt.ini_outputs = false;
   std::ostringstream playback_log;
   try {
@@ -157,7 +158,7 @@ void logRun(const BenchRun& run, std::ostream& log) {
 
 /** Every method on every sequence that is not skipped, on one core. */
 std::vector<BenchRun> runAll(const std::vector<BenchSequence>& sequences, const BenchmarkParams& p,
-                             const std::string& config_file, std::ostream& log) {
+                             const std::string& config_file, std::ostream& log, bool progress) {
   // Every method on one core, as the targets are stated (OpenCV and Open3D would use both
   // otherwise); the caller's setting is restored however this returns.
   const ThreadLimit one_thread(1);
@@ -170,7 +171,7 @@ std::vector<BenchRun> runAll(const std::vector<BenchSequence>& sequences, const 
       continue;
     }
     for (const auto& method : p.methods) {
-      runs.push_back(runOne(seq, method, config_file, traj_dir, p.max_frames));
+      runs.push_back(runOne(seq, method, config_file, traj_dir, p.max_frames, progress));
       logRun(runs.back(), log);
     }
   }
@@ -237,7 +238,7 @@ std::vector<BenchFigure> plotRealSequences(const BenchmarkReport& report, const 
 }  // namespace
 
 BenchmarkReport runBenchmark(const std::string& config_file, const std::vector<std::string>& extra,
-                             std::ostream& log) {
+                             std::ostream& log, bool progress) {
   const auto start = std::chrono::steady_clock::now();
   const auto p = loadBenchmarkParams(config_file);
   checkResultPaths(p, config_file, extra);
@@ -247,7 +248,7 @@ BenchmarkReport runBenchmark(const std::string& config_file, const std::vector<s
   report.machine = machineDescription();
   report.date = today();
   report.sequences = prepareSequences(p, extra, log);
-  report.runs = runAll(report.sequences, p, config_file, log);
+  report.runs = runAll(report.sequences, p, config_file, log, progress);
   report.figures = plotRealSequences(report, p, log);
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 

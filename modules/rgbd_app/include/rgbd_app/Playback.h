@@ -22,15 +22,17 @@ struct PlaybackOptions {
   std::string trajectory;  //!< output TUM trajectory
   std::string csv;         //!< output per-frame CSV ("" = none)
   std::string method;      //!< overrides [Odometry] method
-  std::string plot;        //!< evaluation PNG ("" = none)
+  std::string plot;        //!< evaluation figure, .png/.svg/.pdf ("" = none)
   int max_frames = 0;      //!< stop after this many frames (0 = all)
-  bool progress = true;    //!< progress bar on stderr
+  bool progress = true;    //!< progress line on stderr (rgbd_core/Progress.h)
   // Map and MRPT outputs ("" = from [Playback], where "" = none)
   std::string output_rawlog;  //!< the frames with their estimated pose as sensorPose
   std::string simplemap;      //!< CSimpleMap of (pose, frame) for observations2map
   std::string map_ply;        //!< coloured map, PLY
   std::string map_scene;      //!< coloured map + camera path, .3Dscene
   bool ini_outputs = true;    //!< false: only the outputs set here (CSV, map, rawlog) are written
+
+  std::string progress_label;  //!< leads the progress line ("" = none)
 };
 
 /** Summary of a run. */

@@ -91,9 +91,10 @@ std::vector<BenchSequence> prepareSequences(const BenchmarkParams& params,
 /** Loads [Benchmark] from `config_file` (paths relative to it), prepares the sequences and runs
  * every method on each with runPlayback(), on one thread. Runs that throw are recorded. Each real
  * sequence gets a figure of all methods against its ground truth (plotEvaluations()) in
- * <output_folder>/plots/; one that cannot be drawn is recorded in the report. */
+ * <output_folder>/plots/; one that cannot be drawn is recorded in the report. `progress`: each
+ * run shows its progress on stderr (rgbd_core/Progress.h), labelled "<sequence> <method>". */
 BenchmarkReport runBenchmark(const std::string& config_file, const std::vector<std::string>& extra,
-                             std::ostream& log);
+                             std::ostream& log, bool progress = true);
 
 /** The report as markdown: one table per metric, timing, paths, failures, targets, figures. */
 std::string toMarkdown(const BenchmarkReport& report);

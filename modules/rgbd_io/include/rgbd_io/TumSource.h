@@ -47,6 +47,7 @@ class TumSource : public FrameSource {
 
   const mrpt::img::TCamera& camera() const { return m_camera; }
   std::size_t size() const { return m_pairs.size(); }
+  std::size_t frameCount() const override { return size(); }
   std::size_t unmatchedColour() const { return m_unmatched_rgb; }
 
  private:
