@@ -192,6 +192,8 @@ TEST(ProgressSink, TheTotalIsTheSourcesFrameCountCutByMaxFrames) {
   std::size_t n = 0;
   while (src.next()) ++n;
   EXPECT_EQ(all, n) << "counted without loading images, as many as next() gives";
+  EXPECT_EQ(src.frameCount(5), 5u);
+  EXPECT_EQ(src.frameCount(all + 5), all);
   EXPECT_EQ(hrgbd::frameProgress(src, 0, "x").total, all);
   EXPECT_EQ(hrgbd::frameProgress(src, 5, "x").total, 5u);
   EXPECT_EQ(hrgbd::frameProgress(src, all + 5, "x").total, all);

@@ -79,8 +79,8 @@ ProgressParams frameProgress(const FrameSource& source, std::size_t max_frames,
                              const std::string& label) {
   ProgressParams p;
   p.label = label;
-  p.total = source.frameCount();
-  if (max_frames > 0) p.total = p.total ? std::min(p.total, max_frames) : max_frames;
+  p.total = source.frameCount(max_frames);  // a rawlog is read up to max_frames at most
+  if (p.total == 0) p.total = max_frames;   // a live sensor stops there too
   p.terminal = isatty(STDERR_FILENO);
   return p;
 }

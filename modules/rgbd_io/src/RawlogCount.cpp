@@ -11,14 +11,14 @@
 
 namespace hrgbd {
 
-std::size_t RawlogSource::frameCount() const {
+std::size_t RawlogSource::frameCount(std::size_t at_most) const {
   using mrpt::obs::CObservation3DRangeScan;
   mrpt::io::CFileGZInputStream file;
   if (!file.open(m_path)) return 0;
   auto archive = mrpt::serialization::archiveFrom(file);
   std::size_t frames = 0;
   try {
-    for (;;) {
+    while (at_most == 0 || frames < at_most) {
       const ReadingRawlogEntry reading;
       const auto obj = archive.ReadObject();
       if (std::dynamic_pointer_cast<CObservation3DRangeScan>(obj)) {
@@ -29,6 +29,7 @@ std::size_t RawlogSource::frameCount() const {
         });
       }
     }
+    return std::min(frames, at_most);  // a SensoryFrame may hold more than one
   } catch (const mrpt::serialization::CExceptionEOF&) {
     return frames;
   } catch (const std::exception&) {
