@@ -177,10 +177,11 @@ TEST(ProgressSink, CountsFramesAndTheUnregisteredAndEndsTheLine) {
   now = 2, sink.add(*obs, result(2, 0, kLost));
   sink.finish(log);
   EXPECT_EQ(out.str().back(), '\n');
-  EXPECT_NE(out.str().find("\r2/4 frames (50%), 1.0 frames/s, 2 s left, 1 not registered"),
+  EXPECT_NE(out.str().find("\r2/4 frames (50%), 1.0 frames/s, 2.0 s left, 1 not registered"),
             std::string::npos)
       << out.str();
-  EXPECT_NE(out.str().find("\r2 frames in 2 s, 1.0 frames/s, 1 not registered"), std::string::npos)
+  EXPECT_NE(out.str().find("\r2 frames in 2.0 s, 1.0 frames/s, 1 not registered"),
+            std::string::npos)
       << out.str();
   EXPECT_TRUE(log.str().empty());
 }

@@ -43,10 +43,11 @@ TEST(Progress, LineShowsDoneTotalRateAndTimeLeft) {
 }
 
 TEST(Progress, DurationsReadAsMinutesAndHours) {
-  EXPECT_EQ(hrgbd::formatDuration(4.4), "4 s");
+  EXPECT_EQ(hrgbd::formatDuration(4.44), "4.4 s");
+  EXPECT_EQ(hrgbd::formatDuration(12.4), "12 s");
   EXPECT_EQ(hrgbd::formatDuration(125), "2 min 05 s");
   EXPECT_EQ(hrgbd::formatDuration(3725), "1 h 02 min");
-  EXPECT_EQ(hrgbd::formatDuration(-3), "0 s");
+  EXPECT_EQ(hrgbd::formatDuration(-3), "0.0 s");
 }
 
 TEST(Progress, OnATerminalOneLineIsRedrawnAtMostFourTimesASecond) {
@@ -66,18 +67,19 @@ TEST(Progress, OnATerminalOneLineIsRedrawnAtMostFourTimesASecond) {
   const auto redraws = std::count(s.begin(), s.end(), '\r');
   EXPECT_GE(redraws, 3);
   EXPECT_LE(redraws, 5);
-  EXPECT_NE(s.find("\r1/10 frames (10%), 10.0 frames/s, 1 s left, long detail text"),
+  EXPECT_NE(s.find("\r1/10 frames (10%), 10.0 frames/s, 0.9 s left, long detail text"),
             std::string::npos)
       << s;
   // The final line clears what the longer line before it left on screen.
   const auto end = s.rfind('\r'), before = s.rfind('\r', end - 1);
   const auto last = s.substr(end + 1, s.size() - end - 2),
              previous = s.substr(before + 1, end - before - 1);
-  EXPECT_EQ(last.rfind("10 frames in 1 s, 10.0 frames/s", 0), 0u) << last;
+  EXPECT_EQ(last.rfind("10 frames in 1.0 s, 10.0 frames/s", 0), 0u) << last;
   EXPECT_EQ(previous.substr(0, previous.find_last_not_of(' ') + 1),
             "10/10 frames (100%), 10.0 frames/s");
   EXPECT_GE(last.size(), previous.size());
-  EXPECT_EQ(last.find_last_not_of(' ') + 1, std::string("10 frames in 1 s, 10.0 frames/s").size());
+  EXPECT_EQ(last.find_last_not_of(' ') + 1,
+            std::string("10 frames in 1.0 s, 10.0 frames/s").size());
   progress.finish();  // once only
   EXPECT_EQ(f.out.str(), s);
 }

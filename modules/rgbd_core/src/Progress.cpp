@@ -16,9 +16,12 @@ double steadySeconds() {
 }  // namespace
 
 std::string formatDuration(double seconds) {
-  const long s = std::lround(std::max(0.0, seconds));
+  seconds = std::max(0.0, seconds);
+  const long s = std::lround(seconds);
   char buf[64];
-  if (s < 60)
+  if (seconds < 9.95)
+    std::snprintf(buf, sizeof buf, "%.1f s", seconds);
+  else if (s < 60)
     std::snprintf(buf, sizeof buf, "%ld s", s);
   else if (s < 3600)
     std::snprintf(buf, sizeof buf, "%ld min %02ld s", s / 60, s % 60);

@@ -51,7 +51,7 @@ class Progress {
   bool m_finished = false;
 };
 
-/** "4 s", "2 min 05 s", "1 h 02 min". */
+/** "4.4 s" (below 10 s), "12 s", "2 min 05 s", "1 h 02 min". */
 std::string formatDuration(double seconds);
 
 }  // namespace hrgbd
