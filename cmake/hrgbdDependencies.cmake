@@ -9,6 +9,7 @@ hrgbd_dependency(mrpt-tfest)
 hrgbd_dependency(mrpt-hwdrivers)
 hrgbd_dependency(mrpt-gui)
 hrgbd_dependency(mrpt-slam)
+hrgbd_dependency(mrpt-graphslam)
 hrgbd_dependency(OpenCV 4 COMPONENTS core imgproc features2d imgcodecs calib3d rgbd)
 # Open3D's dense odometry (rgbd_baselines' open3d_* peers; 0.16 in Debian 12).
 hrgbd_dependency(Open3D)

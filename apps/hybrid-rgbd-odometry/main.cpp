@@ -25,6 +25,9 @@ int main(int argc, char** argv) {
                  "OUT.simplemap", cmd);
   Text ply("", "map-ply", "coloured map as PLY", false, "", "OUT.ply", cmd);
   Text scene("", "map-scene", "coloured map and path as .3Dscene", false, "", "OUT.3Dscene", cmd);
+  TCLAP::SwitchArg slam("", "slam", "SLAM mode: loop closures and pose-graph optimisation", cmd);
+  Text graph("", "graph", "SLAM mode: the pose graph, MRPT text format", false, "", "OUT.graph",
+             cmd);
   TCLAP::SwitchArg quiet("q", "quiet", "no progress bar", cmd);
   TCLAP::SwitchArg print("", "print-config", "print the effective configuration and exit", cmd);
   return cmd.run(argc, argv, [&] {
@@ -45,6 +48,8 @@ int main(int argc, char** argv) {
     o.simplemap = simplemap.getValue();
     o.map_ply = ply.getValue();
     o.map_scene = scene.getValue();
+    o.slam = slam.getValue();
+    o.graph = graph.getValue();
     hrgbd::runPlayback(o, std::cout);
   });
 }

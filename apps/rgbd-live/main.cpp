@@ -17,6 +17,8 @@ int main(int argc, char** argv) {
                                "close S seconds after the data ends and save; negative (default) "
                                "= keep the window until it is closed or [q]",
                                false, -1, cmd.finite("S"), cmd);
+  TCLAP::SwitchArg slam("", "slam", "SLAM mode: loop closures, the map snaps to optimised poses",
+                        cmd);
   TCLAP::ValueArg<int> frames("n", "max-frames", "stop after N frames (0 = all)", false, 0,
                               cmd.atLeast(0, "N"), cmd);
   return cmd.run(argc, argv, [&] {
@@ -26,6 +28,7 @@ int main(int argc, char** argv) {
     o.rate = rate.getValue();
     o.save_prefix = prefix.getValue();
     o.hold_seconds = hold.getValue();
+    o.slam = slam.getValue();
     o.max_frames = frames.getValue();
     hrgbd::runLive(o, std::cout);
   });

@@ -19,6 +19,7 @@
 #include "rgbd_map/ColouredMap.h"
 #include "rgbd_odometry/OdometryParams.h"
 #include "rgbd_sim/Simulator.h"
+#include "rgbd_slam/SlamParams.h"
 
 using hrgbd::ConfigError;
 using mrpt::config::CConfigFileMemory;
@@ -88,6 +89,7 @@ std::vector<SectionCase> allSections() {
           caseOf<BaselineParams>(bs, "RANSAC", baselines.ransac),
           caseOf<BaselineParams>(bs, "ICP", baselines.icp),
           caseOf<MapParams>("Map", "Map", MapParams()),
+          caseOf<SlamParams>("Slam", "Slam", SlamParams()),
           caseOf<TumSourceParams>("TumSource", "TumSource", TumSourceParams()),
           caseOf<sim::SimParams>("Simulator", "Simulator", sim::SimParams()),
           caseOf<BenchmarkParams>("Benchmark", "Benchmark", BenchmarkParams())};

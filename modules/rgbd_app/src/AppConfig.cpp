@@ -8,6 +8,7 @@
 #include "rgbd_io/TumSource.h"
 #include "rgbd_map/ColouredMap.h"
 #include "rgbd_odometry/OdometryParams.h"
+#include "rgbd_slam/SlamParams.h"
 
 namespace hrgbd {
 
@@ -30,12 +31,15 @@ std::string effectiveConfig(const std::string& config_file) {
   map.loadFromConfigFile(*cfg, "Map");
   TumSourceParams tum;
   tum.loadFromConfigFile(*cfg, "TumSource");
+  SlamParams slam;
+  slam.loadFromConfigFile(*cfg, "Slam");
   mrpt::config::CConfigFileMemory out;
   pb.saveToConfigFile(out, "Playback");
   odo.saveToConfigFile(out, "Odometry");
   baselines.saveToConfigFile(out, BaselineParams::kSection);
   map.saveToConfigFile(out, "Map");
   tum.saveToConfigFile(out, "TumSource");
+  slam.saveToConfigFile(out, "Slam");
   return out.getContent();
 }
 

@@ -1,5 +1,6 @@
 #include "rgbd_app/FrameLoop.h"
 
+#include <ostream>
 #include <stdexcept>
 
 namespace hrgbd {
@@ -13,12 +14,22 @@ FrameLoop::FrameLoop(FrameSource& source, std::unique_ptr<RgbdOdometry> odometry
   if (!m_odometry) throw std::invalid_argument("FrameLoop: no odometry");
 }
 
+void FrameLoop::setSlam(std::unique_ptr<KeyframeSlam> slam, bool live_corrections) {
+  m_slam = std::move(slam);
+  m_live_corrections = live_corrections;
+}
+
 bool FrameLoop::step() {
   if (m_max_frames > 0 && m_frames >= m_max_frames) return false;
   const auto obs = m_source.next();
   if (!obs) return false;
-  const auto r = m_odometry->processObservation(*obs);
+  auto r = m_odometry->processObservation(*obs);
+  const bool corrected = m_slam && m_slam->add(r, *m_odometry);
   for (auto* sink : m_sinks) sink->add(*obs, r);
+  if (corrected && m_live_corrections) {
+    const auto poses = m_slam->poses();
+    for (auto* sink : m_sinks) sink->correct(poses);
+  }
   ++m_frames;
   return true;
 }
@@ -30,11 +41,18 @@ std::size_t FrameLoop::run() {
 }
 
 void FrameLoop::finish(std::ostream& log) {
+  if (m_slam) {
+    m_slam->flush();
+    const auto poses = m_slam->poses();
+    for (auto* sink : m_sinks) sink->correct(poses);
+    log << toText(m_slam->stats());
+  }
   for (auto* sink : m_sinks) sink->finish(log);
 }
 
 void FrameLoop::reset() {
   m_odometry->reset();
+  if (m_slam) m_slam->reset();
   for (auto* sink : m_sinks) sink->reset();
   m_frames = 0;
 }

@@ -1,8 +1,10 @@
 #include "rgbd_app/MapSinks.h"
 
+#include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/obs/T3DPointsProjectionParams.h>
 #include <mrpt/poses/CPose3DPDFGaussian.h>
+#include <mrpt/serialization/CArchive.h>
 
 #include <opencv2/core.hpp>
 #include <ostream>
@@ -13,12 +15,30 @@
 
 namespace hrgbd {
 
-ColouredMapSink::ColouredMapSink(const MapParams& params, MapFiles files)
-    : m_map(params), m_files(std::move(files)) {}
+ColouredMapSink::ColouredMapSink(const MapParams& params, MapFiles files, bool keyframes_only)
+    : m_map(params), m_files(std::move(files)), m_keyframes_only(keyframes_only) {}
 
 void ColouredMapSink::add(const mrpt::obs::CObservation3DRangeScan& obs, const FrameResult& r) {
   m_path.push_back(opticalToMrptWorld(r.pose));
-  if (r.registered()) m_map.insert(obs, r.pose);
+  if (!r.registered()) return;
+  if (!m_keyframes_only) {
+    m_map.insert(obs, r.pose);
+  } else if (r.keyframe) {
+    ColouredMap cloud(m_map.params());
+    cloud.insert(obs, mrpt::poses::CPose3D());
+    m_map.insert(cloud, r.pose);
+    m_clouds.emplace_back(m_path.size() - 1, std::move(cloud));
+  }
+}
+
+void ColouredMapSink::correct(const SlamPoses& slam) {
+  if (slam.poses.size() != m_path.size())
+    throw std::logic_error("ColouredMapSink: optimised poses do not match the frames");
+  for (std::size_t i = 0; i < m_path.size(); ++i) m_path[i] = opticalToMrptWorld(slam.poses[i]);
+  m_loops = slam.loops;
+  if (!m_keyframes_only) return;  // frames inserted as they came cannot be moved
+  m_map.clear();
+  for (const auto& [frame, cloud] : m_clouds) m_map.insert(cloud, slam.poses[frame]);
 }
 
 void ColouredMapSink::finish(std::ostream& log) {
@@ -31,11 +51,13 @@ void ColouredMapSink::finish(std::ostream& log) {
 void ColouredMapSink::reset() {
   m_map.clear();
   m_path.clear();
+  m_clouds.clear();
+  m_loops.clear();
 }
 
 void ColouredMapSink::save(const MapFiles& files) const {
   if (!files.ply.empty()) m_map.savePly(files.ply);
-  if (!files.scene.empty()) saveScene(m_map, m_path, files.scene);
+  if (!files.scene.empty()) saveScene(m_map, m_path, files.scene, m_loops);
 }
 
 PosedRawlogSink::PosedRawlogSink(const std::string& path)
@@ -49,11 +71,31 @@ void PosedRawlogSink::add(const mrpt::obs::CObservation3DRangeScan& obs, const F
   m_writer->write(copy);
 }
 
+void PosedRawlogSink::correct(const SlamPoses& slam) { m_corrected = slam.poses; }
+
 void PosedRawlogSink::finish(std::ostream& log) {
   if (!m_writer) return;
+  const std::size_t written = m_writer->written();
   m_writer->close();
   m_writer.reset();
-  log << "rawlog with poses: " << m_path << "\n";
+  if (m_corrected.empty()) {
+    log << "rawlog with poses: " << m_path << "\n";
+    return;
+  }
+  if (m_corrected.size() != written)
+    throw std::logic_error("PosedRawlogSink: optimised poses do not match the frames");
+  // Read back object by object and written again with the optimised poses; the external image
+  // names are kept as they are (MRPT loads external images lazily, and only on demand).
+  mrpt::io::CFileGZInputStream in(m_path);
+  auto reader = mrpt::serialization::archiveFrom(in);
+  RawlogWriter out(m_path);  // inline: objects as they are; moved onto m_path by close()
+  for (std::size_t i = 0; i < written; ++i) {
+    auto obs = reader.ReadObject<mrpt::obs::CObservation3DRangeScan>();
+    obs->sensorPose = opticalToMrptWorld(m_corrected[i]);
+    out.write(*obs);
+  }
+  out.close();
+  log << "rawlog with poses (SLAM, optimised): " << m_path << "\n";
 }
 
 void SimplemapSink::add(const mrpt::obs::CObservation3DRangeScan& obs, const FrameResult& r) {
@@ -70,6 +112,14 @@ void SimplemapSink::add(const mrpt::obs::CObservation3DRangeScan& obs, const Fra
   auto sf = mrpt::obs::CSensoryFrame::Create();
   sf->insert(copy);
   m_simplemap.insert(mrpt::poses::CPose3DPDFGaussian::Create(opticalToMrptWorld(r.pose)), sf);
+}
+
+void SimplemapSink::correct(const SlamPoses& slam) {
+  if (slam.poses.size() != m_simplemap.size())
+    throw std::logic_error("SimplemapSink: optimised poses do not match the frames");
+  for (std::size_t i = 0; i < m_simplemap.size(); ++i)
+    m_simplemap.getAsPair(i).pose =
+        mrpt::poses::CPose3DPDFGaussian::Create(opticalToMrptWorld(slam.poses[i]));
 }
 
 void SimplemapSink::finish(std::ostream& log) {

@@ -23,7 +23,8 @@ namespace {
 struct PlaybackJob {
   std::unique_ptr<mrpt::config::CConfigFileBase> cfg;
   OdometryParams odometry;
-  std::string input, trajectory, csv;
+  SlamParams slam;
+  std::string input, trajectory, csv, graph;
   MapOutputPaths outputs;
   std::vector<JobPath> written;  //!< every output file and folder, named by option or key
 };
@@ -37,12 +38,15 @@ PlaybackJob resolveJob(const PlaybackOptions& opt) {
   if (!opt.ini_outputs) pb.csv.clear(), pb.outputs = {};
   job.odometry.loadFromConfigFile(*job.cfg, "Odometry");
   if (!opt.method.empty()) job.odometry.method = parseMethod(opt.method);
+  job.slam.loadFromConfigFile(*job.cfg, "Slam");
+  if (opt.slam) job.slam.enabled = true;
   auto pick = [](const std::string& cli, const std::string& ini) {
     return cli.empty() ? ini : cli;
   };
   job.input = pick(opt.input, pb.input);
   job.trajectory = pick(opt.trajectory, pb.trajectory);
   job.csv = pick(opt.csv, pb.csv);
+  job.graph = pick(opt.graph, pb.graph);
   job.outputs = {pick(opt.output_rawlog, pb.outputs.output_rawlog),
                  pick(opt.simplemap, pb.outputs.simplemap), pick(opt.map_ply, pb.outputs.map_ply),
                  pick(opt.map_scene, pb.outputs.map_scene)};
@@ -58,6 +62,7 @@ PlaybackJob resolveJob(const PlaybackOptions& opt) {
       output(opt.simplemap, pb.outputs.simplemap, "--simplemap", "simplemap"),
       output(opt.map_ply, pb.outputs.map_ply, "--map-ply", "map_ply"),
       output(opt.map_scene, pb.outputs.map_scene, "--map-scene", "map_scene"),
+      output(opt.graph, pb.graph, "--graph", "graph"),
       {opt.plot, "--plot", false, true}};
   if (!job.outputs.output_rawlog.empty()) {
     auto images = job.written[2];  // its colour images, PNG files
@@ -79,6 +84,10 @@ class SummarySink : public FrameSink {
     figures.inlier_points.clear();  // display only; a long run keeps just the figures
     m_sum.results.push_back(figures);
     m_sum.registered += r.registered();
+  }
+  void correct(const SlamPoses& slam) override {
+    for (std::size_t i = 0; i < m_sum.results.size() && i < slam.poses.size(); ++i)
+      m_sum.results[i].pose = slam.poses[i];
   }
   void finish(std::ostream& log) override {
     m_sum.frames = m_sum.results.size();
@@ -139,7 +148,8 @@ PlaybackSinks makeSinks(const PlaybackJob& job, const FrameSource& source,
   if (!o.output_rawlog.empty()) s.rawlog = std::make_unique<PosedRawlogSink>(o.output_rawlog);
   if (!o.simplemap.empty()) s.simplemap = std::make_unique<SimplemapSink>(o.simplemap);
   if (!o.map_ply.empty() || !o.map_scene.empty())
-    s.map = std::make_unique<ColouredMapSink>(map_params, MapFiles{o.map_ply, o.map_scene});
+    s.map = std::make_unique<ColouredMapSink>(map_params, MapFiles{o.map_ply, o.map_scene},
+                                              job.slam.enabled);
   return s;
 }
 
@@ -162,6 +172,12 @@ void evaluate(const FrameSource& source, const Trajectory& estimate, const std::
     return;
   }
   log << "evaluation against ground truth:\n" << toText(sum.eval);
+  if (!sum.loops.empty()) {
+    sum.loop_check = checkRelativePoses(gt, sum.loops);
+    log << "loop edges vs ground truth: " << sum.loop_check.checked << " checked, largest error "
+        << std::fixed << std::setprecision(4) << sum.loop_check.largest_translation << " m, "
+        << std::setprecision(2) << sum.loop_check.largest_rotation << " deg\n";
+  }
   if (!plot.empty()) {
     plotEvaluation(sum.eval, plot, title);
     log << "plot: " << plot << "\n";
@@ -191,13 +207,30 @@ PlaybackSummary runPlayback(const PlaybackOptions& opt, std::ostream& log) {
   if (opt.progress) progress = frameProgress(*source, max_frames, opt.progress_label);
   const auto sinks = makeSinks(job, *source, opt.progress ? &progress : nullptr);
   FrameLoop loop(*source, std::move(odometry), sinks.list(), max_frames);
+  if (job.slam.enabled) loop.setSlam(std::make_unique<KeyframeSlam>(job.slam, job.odometry));
+  if (!job.graph.empty() && !job.slam.enabled)
+    throw UsageError("a pose graph (--graph / [Playback] graph) needs the SLAM mode (--slam)");
   loop.run();
   loop.finish(log);
+  if (!job.graph.empty()) {
+    loop.slam()->graph().save(job.graph);
+    log << "pose graph (MRPT text format): " << job.graph << "\n";
+  }
 
   auto sum = std::move(sinks.summary->summary());
   sum.map_points = sinks.map ? sinks.map->map().size() : 0;
+  sum.slam = job.slam.enabled;
+  if (sum.slam) {
+    sum.slam_stats = loop.slam()->stats();
+    const auto slam = loop.slam()->poses();
+    const auto& traj = sinks.trajectory->trajectory();
+    for (std::size_t i = 0; i < slam.loops.size(); ++i)
+      sum.loops.push_back(
+          {traj.at(slam.loops[i].first).t, traj.at(slam.loops[i].second).t, slam.loop_measured[i]});
+  }
   evaluate(*source, sinks.trajectory->trajectory(), opt.plot,
-           job.input + " (" + toString(job.odometry.method) + ")", sum, log);
+           job.input + " (" + toString(job.odometry.method) + (sum.slam ? ", SLAM" : "") + ")", sum,
+           log);
   return sum;
 }
 

@@ -14,12 +14,14 @@ struct PlaybackSection : public Params<PlaybackSection> {
   std::string trajectory = "trajectory.txt";  // TUM format, optical frame (always written)
   std::string csv;                            // per-frame CSV; "" = none
   MapOutputPaths outputs;                     // keys output_rawlog, simplemap, map_ply, map_scene
+  std::string graph;                          // SLAM mode: pose graph, MRPT text; "" = none
 
   template <class P, class V>
   static void declare(P& p, V& v) {
     HRGBD_PARAM(input, "rawlog, TUM folder or openni2; relative to the INI file");
     HRGBD_PARAM(trajectory, "output trajectory, TUM format (optical frame)");
     HRGBD_PARAM(csv, "per-frame CSV: status, path, counts, ms per stage; empty = none");
+    HRGBD_PARAM(graph, "SLAM mode: pose graph in MRPT's text format; empty = none");
     // MapOutputPaths is not a params struct of its own: its fields are this section's keys.
     v(p.outputs.output_rawlog, "output_rawlog", "frames with estimated poses; empty = none");
     v(p.outputs.simplemap, "simplemap", "(pose, frame) pairs for observations2map; empty = none");
@@ -31,7 +33,7 @@ struct PlaybackSection : public Params<PlaybackSection> {
     loadFromConfigFile(c, "Playback");
     // The default trajectory (no key) stays relative to the working directory.
     const bool trajectory_given = c.keyExists("Playback", "trajectory");
-    for (auto* path : {&input, &trajectory, &csv, &outputs.output_rawlog, &outputs.simplemap,
+    for (auto* path : {&input, &trajectory, &csv, &graph, &outputs.output_rawlog, &outputs.simplemap,
                        &outputs.map_ply, &outputs.map_scene})
       if (*path != "openni2" && (path != &trajectory || trajectory_given))
         *path = resolvePath(base, *path);

@@ -12,7 +12,7 @@
 namespace hrgbd {
 
 TrajectorySink::TrajectorySink(const std::string& path, const std::string& comment)
-    : m_file(std::make_unique<StreamOutput>(path, "trajectory")) {
+    : m_file(std::make_unique<StreamOutput>(path, "trajectory")), m_path(path), m_comment(comment) {
   m_file->stream() << comment << "\n";
   m_file->flush();
 }
@@ -27,6 +27,12 @@ void TrajectorySink::add(const mrpt::obs::CObservation3DRangeScan& obs, const Fr
 
 void TrajectorySink::finish(std::ostream& log) {
   if (!m_file) return;
+  if (m_corrected) {
+    m_file.reset();  // the lines written as the frames came are replaced in full
+    save(m_path, m_comment);
+    log << "trajectory (SLAM, optimised): " << m_path << "\n";
+    return;
+  }
   m_file->commit();
   log << "trajectory: " << m_file->path() << "\n";
   m_file.reset();
@@ -35,6 +41,15 @@ void TrajectorySink::finish(std::ostream& log) {
 void TrajectorySink::reset() {
   m_trajectory.clear();
   m_times.clear();
+}
+
+void TrajectorySink::correct(const SlamPoses& slam) {
+  if (slam.poses.size() != m_trajectory.size())
+    throw std::logic_error("TrajectorySink: " + std::to_string(slam.poses.size()) +
+                           " optimised poses for " + std::to_string(m_trajectory.size()) +
+                           " frames");
+  for (std::size_t i = 0; i < m_trajectory.size(); ++i) m_trajectory[i].pose = slam.poses[i];
+  m_corrected = true;
 }
 
 void TrajectorySink::save(const std::string& path, const std::string& comment) const {

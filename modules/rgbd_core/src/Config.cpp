@@ -48,7 +48,7 @@ std::unique_ptr<mrpt::config::CConfigFileBase> loadIniFile(const std::string& pa
 
 const std::vector<std::string>& knownConfigSections() {
   static const std::vector<std::string> s{
-      "Playback", "Odometry", "ORB",       "Geometric", "MSSE",      "Dense",    "RANSAC",
+      "Playback", "Odometry", "ORB",       "Geometric", "MSSE",      "Dense",    "Slam", "RANSAC",
       "ICP",      "Map",      "TumSource", "OpenNI2",   "Simulator", "Benchmark"};
   return s;
 }

@@ -1,9 +1,11 @@
 #include "rgbd_eval/Evaluate.h"
 
+#include <mrpt/core/bits_math.h>
 #include <mrpt/math/TPoint3D.h>
 #include <mrpt/poses/CPose3DQuat.h>
 #include <mrpt/tfest/se3.h>
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -238,6 +240,35 @@ std::string toTable(const std::vector<std::string>& names, const std::vector<Eva
                   names.at(k).c_str(), r.pairs, r.ate_rmse, r.ate_mean_unaligned, rpe_t.c_str(),
                   rpe_r.c_str());
     out += buf;
+  }
+  return out;
+}
+
+RelativeCheck checkRelativePoses(const Trajectory& gt, const std::vector<RelativeMeasurement>& m,
+                                 double max_dt) {
+  std::vector<TimedPose> sorted = gt;
+  std::sort(sorted.begin(), sorted.end(),
+            [](const TimedPose& a, const TimedPose& b) { return a.t < b.t; });
+  auto nearest = [&](double t) -> const TimedPose* {
+    auto it = std::lower_bound(sorted.begin(), sorted.end(), t,
+                               [](const TimedPose& p, double v) { return p.t < v; });
+    const TimedPose* best = nullptr;
+    if (it != sorted.end()) best = &*it;
+    if (it != sorted.begin() && (!best || t - std::prev(it)->t < best->t - t))
+      best = &*std::prev(it);
+    return best && std::abs(best->t - t) <= max_dt ? best : nullptr;
+  };
+  RelativeCheck out;
+  for (const auto& r : m) {
+    const auto* a = nearest(r.t_from);
+    const auto* b = nearest(r.t_to);
+    if (!a || !b) continue;
+    const mrpt::poses::CPose3D err = (-((-a->pose) + b->pose)) + r.relative;
+    const double angle =
+        mrpt::RAD2DEG(Eigen::AngleAxisd(err.getRotationMatrix().asEigen()).angle());
+    ++out.checked;
+    out.largest_translation = std::max(out.largest_translation, err.norm());
+    out.largest_rotation = std::max(out.largest_rotation, angle);
   }
   return out;
 }

@@ -28,7 +28,8 @@ struct LiveSinks {
   ColouredMapSink map;
   ViewerSink viewer;
 
-  LiveSinks(const MapParams& params, LiveViewer& window) : map(params), viewer(window, map) {}
+  LiveSinks(const MapParams& params, LiveViewer& window, bool slam)
+      : map(params, {}, slam), viewer(window, map) {}
   std::vector<FrameSink*> list() { return {&trajectory, &map, &viewer}; }
   /** Writes <prefix>map.ply, <prefix>map.3Dscene and <prefix>trajectory.txt as they are now,
    * each in full or not at all; throws naming the file that cannot be written. */
@@ -83,6 +84,7 @@ void runControls(FrameLoop& loop, LiveSinks& sinks, LiveViewer& viewer, const Gr
     if (!loop.step()) {
       finished = true;
       ended = Clock::now();
+      if (loop.slam()) loop.finish(log);  // the last loops and optimisation, shown
       log << "finished: " << loop.frames() << " frames, map " << sinks.map.map().size()
           << " points, " << grabber.dropped() << " dropped by the grabber" << std::endl;
       viewer.status("end of data: [s] save  [q] quit");
@@ -98,6 +100,9 @@ void runLive(const LiveOptions& opt, std::ostream& log) {
   params.loadFromConfigFile(*cfg, "Odometry");
   MapParams map_params;
   map_params.loadFromConfigFile(*cfg, "Map");
+  SlamParams slam;
+  slam.loadFromConfigFile(*cfg, "Slam");
+  if (opt.slam) slam.enabled = true;
   auto odometry = makeOdometry(params, *cfg);
   auto source = openFrameSource(opt.input, *cfg);  // throws "no OpenNI2 sensor ..." clearly
   auto inputs = source->inputs();
@@ -107,9 +112,11 @@ void runLive(const LiveOptions& opt, std::ostream& log) {
   LiveViewer viewer("hybrid-rgbd-odometry live: " + opt.input);
   Grabber grabber(std::move(source), opt.input == "openni2", opt.rate);
 
-  LiveSinks sinks(map_params, viewer);
+  LiveSinks sinks(map_params, viewer, slam.enabled);
   FrameLoop loop(grabber, std::move(odometry), sinks.list(),
                  opt.max_frames > 0 ? static_cast<std::size_t>(opt.max_frames) : 0);
+  // live, the map snaps to the optimised poses after each optimisation
+  if (slam.enabled) loop.setSlam(std::make_unique<KeyframeSlam>(slam, params), true);
   runControls(loop, sinks, viewer, grabber, opt, log);
   if (opt.hold_seconds >= 0) sinks.save(opt.save_prefix, log);
 }

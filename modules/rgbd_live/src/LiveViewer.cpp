@@ -72,6 +72,37 @@ void LiveViewer::status(const std::string& text) {
   m_win->repaint();
 }
 
+void LiveViewer::snap(const ColouredMap& map, const std::vector<mrpt::poses::CPose3D>& path,
+                      const std::vector<std::pair<std::size_t, std::size_t>>& loops) {
+  auto& scene = m_win->get3DSceneAndLock();
+  m_cloud->clear();
+  m_shown = 0;
+  const auto& pts = map.points();
+  for (; m_shown < pts.size(); ++m_shown) {
+    float x, y, z, cr, cg, cb;
+    pts.getPointRGB(m_shown, x, y, z, cr, cg, cb);
+    m_cloud->push_back(x, y, z, cr, cg, cb);
+  }
+  m_path->clear();
+  for (std::size_t i = 1; i < path.size(); ++i)
+    m_path->appendLine(path[i - 1].x(), path[i - 1].y(), path[i - 1].z(), path[i].x(), path[i].y(),
+                       path[i].z());
+  if (!m_loops) {
+    m_loops = mrpt::opengl::CSetOfLines::Create();
+    m_loops->setColor(1, 0, 0);
+    m_loops->setLineWidth(2);
+    scene->insert(m_loops);
+  }
+  m_loops->clear();
+  for (const auto& [a, b] : loops)
+    if (a < path.size() && b < path.size())
+      m_loops->appendLine(path[a].x(), path[a].y(), path[a].z(), path[b].x(), path[b].y(),
+                          path[b].z());
+  m_loop_count = loops.size();
+  m_win->unlockAccess3DScene();
+  m_win->repaint();
+}
+
 void LiveViewer::update(const mrpt::obs::CObservation3DRangeScan& obs, const FrameResult& r,
                         const ColouredMap& map, const std::vector<mrpt::poses::CPose3D>& path,
                         double fps) {
@@ -113,9 +144,10 @@ void LiveViewer::update(const mrpt::obs::CObservation3DRangeScan& obs, const Fra
   m_win->unlockAccess3DScene();
 
   char line[256];
-  std::snprintf(line, sizeof line, "frame %zu  path %s  %s  inliers %zu/%zu  %.1f fps  map %zu pts",
-                path.size(), r.path.c_str(), toString(r.status), r.inliers, r.matches, fps,
-                pts.size());
+  std::snprintf(line, sizeof line,
+                "frame %zu  path %s  %s  inliers %zu/%zu  %.1f fps  map %zu pts%s", path.size(),
+                r.path.c_str(), toString(r.status), r.inliers, r.matches, fps, pts.size(),
+                m_loop_count ? ("  loops " + std::to_string(m_loop_count)).c_str() : "");
   m_win->addTextMessage(10, -40, line, 1,
                         font(r.registered() ? mrpt::img::TColorf(0.3f, 1.f, 0.3f)
                                             : mrpt::img::TColorf(1.f, 0.3f, 0.3f)));

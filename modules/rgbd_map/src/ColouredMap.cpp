@@ -34,12 +34,6 @@ std::size_t ColouredMap::insert(const mrpt::obs::CObservation3DRangeScan& obs,
   const bool bgr = colour.channels() == 3;
   // The point in the MRPT camera frame is M^-1 (+) p_optical, M = mrptFrameInOptical().
   const auto world = opticalToMrptWorld(optical_pose) + (-mrptFrameInOptical());
-  const double inv = 1.0 / m_params.voxel_size;
-  // 21 bits per axis: +-10 km at 1 cm voxels.
-  auto cell = [inv](double c) {
-    return static_cast<std::uint64_t>(static_cast<std::int64_t>(std::floor(c * inv)) + (1 << 20)) &
-           0x1FFFFF;
-  };
   std::size_t added = 0;
   for (int v = 0; v < img.depth.rows; v += m_params.pixel_stride) {
     const float* z = img.depth.ptr<float>(v);
@@ -48,7 +42,6 @@ std::size_t ColouredMap::insert(const mrpt::obs::CObservation3DRangeScan& obs,
       const auto p = img.cam.backProject(u, v, z[u]);
       double x, y, zz;
       world.composePoint(p.x(), p.y(), p.z(), x, y, zz);
-      if (!m_voxels.insert(cell(x) | cell(y) << 21 | cell(zz) << 42).second) continue;
       float r, g, b;
       if (bgr) {
         const auto& px = colour.at<cv::Vec3b>(v, u);
@@ -56,9 +49,37 @@ std::size_t ColouredMap::insert(const mrpt::obs::CObservation3DRangeScan& obs,
       } else {
         r = g = b = colour.at<std::uint8_t>(v, u) / 255.f;
       }
-      m_points.insertPointRGB(x, y, zz, r, g, b);
-      ++added;
+      added += addPoint(x, y, zz, r, g, b);
     }
+  }
+  return added;
+}
+
+bool ColouredMap::addPoint(double x, double y, double z, float r, float g, float b) {
+  const double inv = 1.0 / m_params.voxel_size;
+  // 21 bits per axis: +-10 km at 1 cm voxels.
+  auto cell = [inv](double c) {
+    return static_cast<std::uint64_t>(static_cast<std::int64_t>(std::floor(c * inv)) + (1 << 20)) &
+           0x1FFFFF;
+  };
+  if (!m_voxels.insert(cell(x) | cell(y) << 21 | cell(z) << 42).second) return false;
+  m_points.insertPointRGB(x, y, z, r, g, b);
+  return true;
+}
+
+std::size_t ColouredMap::insert(const ColouredMap& local,
+                                const mrpt::poses::CPose3D& optical_pose) {
+  // local points are in the MRPT world of the identity optical pose, W0; here they go to W:
+  // p_W = W (+) W0^-1 (+) p
+  const auto move =
+      opticalToMrptWorld(optical_pose) + (-opticalToMrptWorld(mrpt::poses::CPose3D()));
+  std::size_t added = 0;
+  for (std::size_t i = 0; i < local.m_points.size(); ++i) {
+    float x, y, z, r, g, b;
+    local.m_points.getPointRGB(i, x, y, z, r, g, b);
+    double wx, wy, wz;
+    move.composePoint(x, y, z, wx, wy, wz);
+    added += addPoint(wx, wy, wz, r, g, b);
   }
   return added;
 }
@@ -105,13 +126,31 @@ mrpt::opengl::CSetOfObjects::Ptr trajectoryObject(const std::vector<mrpt::poses:
   return obj;
 }
 
+mrpt::opengl::CSetOfObjects::Ptr loopObject(
+    const std::vector<mrpt::poses::CPose3D>& poses,
+    const std::vector<std::pair<std::size_t, std::size_t>>& loops) {
+  auto obj = mrpt::opengl::CSetOfObjects::Create();
+  obj->setName("loop closures");
+  auto lines = mrpt::opengl::CSetOfLines::Create();
+  lines->setColor(1, 0, 0);
+  lines->setLineWidth(2);
+  for (const auto& [a, b] : loops)
+    if (a < poses.size() && b < poses.size())
+      lines->appendLine(poses[a].x(), poses[a].y(), poses[a].z(), poses[b].x(), poses[b].y(),
+                        poses[b].z());
+  obj->insert(lines);
+  return obj;
+}
+
 void saveScene(const ColouredMap& map, const std::vector<mrpt::poses::CPose3D>& poses,
-               const std::string& path) {
+               const std::string& path,
+               const std::vector<std::pair<std::size_t, std::size_t>>& loops) {
   mrpt::opengl::COpenGLScene scene;
   auto cloud = mrpt::opengl::CSetOfObjects::Create();
   map.points().getVisualizationInto(*cloud);
   scene.insert(cloud);
   scene.insert(trajectoryObject(poses));
+  if (!loops.empty()) scene.insert(loopObject(poses, loops));
   scene.insert(mrpt::opengl::stock_objects::CornerXYZSimple(0.3f, 2.f));
   saveCompressed(scene, path, ".3Dscene");  // as COpenGLScene::saveToFile(), checked
 }

@@ -75,6 +75,11 @@ void RgbdOdometry::reset() {
   m_previous_registered = false;
 }
 
+void RgbdOdometry::correct(const mrpt::poses::CPose3D& correction) {
+  if (m_ref) m_ref->pose = toPose(toIsometry(correction + m_ref->pose));
+  m_pose = toPose(toIsometry(correction + m_pose));
+}
+
 FrameResult RgbdOdometry::processObservation(const mrpt::obs::CObservation3DRangeScan& obs) {
   double total = 0;
   FrameResult r = timed(total, [&] { return track(obs); });

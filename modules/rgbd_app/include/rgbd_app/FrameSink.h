@@ -7,6 +7,7 @@
 #include <iosfwd>
 
 #include "rgbd_odometry/FrameResult.h"
+#include "rgbd_slam/SlamPoses.h"
 
 namespace hrgbd {
 
@@ -20,6 +21,10 @@ class FrameSink {
   virtual void finish(std::ostream& log) { (void)log; }
   /** The odometry was reset, the next frame is a new origin: sinks that keep poses drop them. */
   virtual void reset() {}
+  /** SLAM mode: the poses of every frame added since the start or the last reset were optimised
+   * (at the end of a run, before finish(); live, after each optimisation): sinks that keep poses
+   * take these instead. */
+  virtual void correct(const SlamPoses& slam) { (void)slam; }
 };
 
 }  // namespace hrgbd

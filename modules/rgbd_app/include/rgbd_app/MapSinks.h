@@ -7,6 +7,7 @@
 #include <iosfwd>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "rgbd_app/FrameSink.h"
@@ -24,10 +25,17 @@ struct MapFiles {
 /** The coloured map of the registered frames and the camera path (every frame). */
 class ColouredMapSink : public FrameSink {
  public:
-  /** `files` are written by finish(); none for a map that is only shown or saved on demand. */
-  explicit ColouredMapSink(const MapParams& params, MapFiles files = {});
-  /** Registered frames enter the map; every frame extends the path. */
+  /** `files` are written by finish(); none for a map that is only shown or saved on demand.
+   * `keyframes_only` (SLAM mode): only keyframes enter the map, each kept as its own cloud so
+   * that correct() rebuilds the map at the optimised poses. */
+  explicit ColouredMapSink(const MapParams& params, MapFiles files = {},
+                           bool keyframes_only = false);
+  /** Registered frames (keyframes only, see above) enter the map; every frame extends the
+   * path. */
   void add(const mrpt::obs::CObservation3DRangeScan& obs, const FrameResult& r) override;
+  /** Moves the path onto the optimised poses, rebuilds the map from the keyframes' clouds (with
+   * `keyframes_only`) and keeps the loops, which the .3Dscene draws. */
+  void correct(const SlamPoses& slam) override;
   /** Writes the files given at construction and logs each. */
   void finish(std::ostream& log) override;
   /** Empties the map and the path. */
@@ -38,11 +46,16 @@ class ColouredMapSink : public FrameSink {
   const ColouredMap& map() const { return m_map; }
   /** Camera poses in the MRPT world (opticalToMrptWorld()). */
   const std::vector<mrpt::poses::CPose3D>& path() const { return m_path; }
+  /** Loop edges (frame indices) of the latest correct(). */
+  const std::vector<std::pair<std::size_t, std::size_t>>& loops() const { return m_loops; }
 
  private:
   ColouredMap m_map;
   MapFiles m_files;
+  bool m_keyframes_only;
   std::vector<mrpt::poses::CPose3D> m_path;
+  std::vector<std::pair<std::size_t, ColouredMap>> m_clouds;  //!< (frame, cloud in its camera)
+  std::vector<std::pair<std::size_t, std::size_t>> m_loops;
 };
 
 /** Every frame written to a rawlog with its estimated pose (MRPT world) as its sensorPose, where
@@ -53,13 +66,18 @@ class PosedRawlogSink : public FrameSink {
    * std::runtime_error if it cannot. */
   explicit PosedRawlogSink(const std::string& path);
   void add(const mrpt::obs::CObservation3DRangeScan& obs, const FrameResult& r) override;
+  /** Keeps the optimised poses: finish() writes them as the frames' sensorPose. */
+  void correct(const SlamPoses& slam) override;
   /** Completes the rawlog and moves it into place (RawlogWriter::close(): throws naming it if a
-   * write failed) and logs it. Without finish(), no rawlog appears under its name. */
+   * write failed) and logs it. Without finish(), no rawlog appears under its name. After
+   * correct(), the rawlog is then rewritten with the optimised poses (read back object by
+   * object, so memory stays bounded; the external images are not touched). */
   void finish(std::ostream& log) override;
 
  private:
   std::string m_path;
   std::unique_ptr<RawlogWriter> m_writer;
+  std::vector<mrpt::poses::CPose3D> m_corrected;
 };
 
 /** Every frame, with its point cloud and inline colour image, at its estimated pose (MRPT
@@ -72,6 +90,8 @@ class SimplemapSink : public FrameSink {
    * and logs it. */
   void finish(std::ostream& log) override;
   void reset() override { m_simplemap.clear(); }
+  /** Moves every (pose, frame) pair onto its optimised pose. */
+  void correct(const SlamPoses& slam) override;
 
  private:
   std::string m_path;

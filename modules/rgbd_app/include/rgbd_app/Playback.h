@@ -12,6 +12,7 @@
 #include "rgbd_app/AppConfig.h"
 #include "rgbd_eval/Evaluate.h"
 #include "rgbd_odometry/RgbdOdometry.h"
+#include "rgbd_slam/KeyframeSlam.h"
 
 namespace hrgbd {
 
@@ -30,6 +31,8 @@ struct PlaybackOptions {
   std::string simplemap;      //!< CSimpleMap of (pose, frame) for observations2map
   std::string map_ply;        //!< coloured map, PLY
   std::string map_scene;      //!< coloured map + camera path, .3Dscene
+  bool slam = false;          //!< SLAM mode, whatever [Slam] enabled says
+  std::string graph;          //!< SLAM mode: the pose graph, MRPT text format ("" = [Playback])
   bool ini_outputs = true;    //!< false: only the outputs set here (CSV, map, rawlog) are written
 
   std::string progress_label;  //!< leads the progress line ("" = none)
@@ -43,6 +46,10 @@ struct PlaybackSummary {
   EvalResult eval;  //!< valid when evaluated (toText() / toJson() format it)
   double median_ms = 0, p95_ms = 0;
   std::size_t map_points = 0;  //!< points in the coloured map (when a map output was asked)
+  bool slam = false;           //!< ran in SLAM mode: poses are the optimised ones
+  SlamStats slam_stats;        //!< valid in SLAM mode
+  std::vector<RelativeMeasurement> loops;  //!< SLAM mode: the loop edges that hold
+  RelativeCheck loop_check;                //!< the loops against the ground truth (when evaluated)
 };
 
 /** Runs the whole job; progress and results are written to `log`. Throws on bad configuration,

@@ -34,6 +34,8 @@ class TrajectorySink : public FrameSink {
   void finish(std::ostream& log) override;
   /** Drops the poses kept in memory; lines already written stay in the file. */
   void reset() override;
+  /** Takes the optimised poses; finish() then writes the file anew with them. */
+  void correct(const SlamPoses& slam) override;
   /** Poses (optical frame of the first camera) since the start or the last reset. */
   const Trajectory& trajectory() const { return m_trajectory; }
   /** Writes the poses kept in memory to `path` (TUM, exact time stamps), in full or not at all;
@@ -42,6 +44,8 @@ class TrajectorySink : public FrameSink {
 
  private:
   std::unique_ptr<StreamOutput> m_file;
+  std::string m_path, m_comment;
+  bool m_corrected = false;
   Trajectory m_trajectory;
   std::vector<std::string> m_times;  //!< formatFrameTime() of each pose in m_trajectory
 };

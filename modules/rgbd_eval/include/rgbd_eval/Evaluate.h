@@ -64,6 +64,26 @@ std::string toJsonArray(const std::vector<std::string>& names,
  * RMSE, unaligned ATE mean [m], RPE translation [m/s] and rotation [deg/s] ("-" when none). */
 std::string toTable(const std::vector<std::string>& names, const std::vector<EvalResult>& results);
 
+/** A measured relative pose between two times (a loop closure): `relative` is the pose at
+ * `t_to` in the frame of the pose at `t_from`. */
+struct RelativeMeasurement {
+  double t_from = 0, t_to = 0;  //!< [s]
+  mrpt::poses::CPose3D relative;
+};
+
+/** How far measured relative poses are from the ground truth's. */
+struct RelativeCheck {
+  std::size_t checked = 0;         //!< measurements with ground truth at both ends
+  double largest_translation = 0;  //!< [m]
+  double largest_rotation = 0;     //!< [deg]
+};
+
+/** Compares each measurement with the ground truth's relative pose between the ground-truth
+ * poses nearest its two times (within `max_time_difference` [s]; others are not checked). */
+RelativeCheck checkRelativePoses(const Trajectory& ground_truth,
+                                 const std::vector<RelativeMeasurement>& measured,
+                                 double max_time_difference = 0.02);
+
 /** The q-quantile (0..1, nearest rank) of `v`; 0 for an empty vector. */
 double percentile(std::vector<double> v, double q);
 

@@ -17,6 +17,7 @@ struct LiveOptions {
    * (scripts and the Xvfb test). */
   double hold_seconds = -1;
   int max_frames = 0;  //!< stop after N frames (0 = all)
+  bool slam = false;   //!< SLAM mode, whatever [Slam] enabled says
 };
 
 /** Runs until the data ends (and the hold expires) or the window is closed. Throws with a clear

@@ -8,6 +8,7 @@
 #include <mrpt/opengl/CSetOfLines.h>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "rgbd_map/ColouredMap.h"
@@ -25,6 +26,10 @@ class LiveViewer {
   /** Shows a processed frame; `path` are MRPT world poses (opticalToMrptWorld()). */
   void update(const mrpt::obs::CObservation3DRangeScan& obs, const FrameResult& r,
               const ColouredMap& map, const std::vector<mrpt::poses::CPose3D>& path, double fps);
+  /** SLAM mode: the map and path moved onto optimised poses; `loops` (indices into `path`) are
+   * drawn as red lines and counted in the status line. */
+  void snap(const ColouredMap& map, const std::vector<mrpt::poses::CPose3D>& path,
+            const std::vector<std::pair<std::size_t, std::size_t>>& loops);
   /** The status line (paused, saved, finished, ...). */
   void status(const std::string& text);
   /** Removes the map and the path (after a reset). */
@@ -35,7 +40,9 @@ class LiveViewer {
   mrpt::opengl::CPointCloudColoured::Ptr m_cloud;
   mrpt::opengl::CSetOfLines::Ptr m_path;
   mrpt::opengl::CFrustum::Ptr m_frustum;
-  std::size_t m_shown = 0;  // map points already in m_cloud
+  mrpt::opengl::CSetOfLines::Ptr m_loops;
+  std::size_t m_shown = 0;       // map points already in m_cloud
+  std::size_t m_loop_count = 0;  // loops shown (SLAM mode)
 };
 
 }  // namespace hrgbd

@@ -18,6 +18,10 @@ class ViewerSink : public FrameSink {
   void add(const mrpt::obs::CObservation3DRangeScan& obs, const FrameResult& r) override;
   /** Removes the map and the path from the window. */
   void reset() override { m_viewer.clear(); }
+  /** SLAM mode: shows the map and path the map sink (before this one) moved, and the loops. */
+  void correct(const SlamPoses& slam) override {
+    m_viewer.snap(m_map.map(), m_map.path(), slam.loops);
+  }
 
  private:
   LiveViewer& m_viewer;

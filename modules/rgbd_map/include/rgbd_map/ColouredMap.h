@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <string>
 #include <unordered_set>
+#include <utility>
 #include <vector>
 
 #include "rgbd_core/Params.h"
@@ -44,14 +45,21 @@ class ColouredMap {
    * std::invalid_argument for a frame without colour or depth (as prepareRgbdImage()). */
   std::size_t insert(const mrpt::obs::CObservation3DRangeScan& obs,
                      const mrpt::poses::CPose3D& optical_pose);
+  /** Inserts `local`, a map of frames inserted at the identity pose (one camera's cloud), as
+   * seen from `optical_pose`; voxels as above. Returns the number of points added. */
+  std::size_t insert(const ColouredMap& local, const mrpt::poses::CPose3D& optical_pose);
   void clear();
   std::size_t size() const { return m_points.size(); }
+  const MapParams& params() const { return m_params; }
   const mrpt::maps::CColouredPointsMap& points() const { return m_points; }
   /** Binary PLY with colour, in full or not at all (OutputFile.h); throws std::runtime_error
    * naming the file on failure. */
   void savePly(const std::string& path) const;
 
  private:
+  /** Adds the point unless its voxel is taken. */
+  bool addPoint(double x, double y, double z, float r, float g, float b);
+
   MapParams m_params;
   std::unordered_set<std::uint64_t> m_voxels;
   mrpt::maps::CColouredPointsMap m_points;
@@ -62,9 +70,15 @@ class ColouredMap {
 mrpt::opengl::CSetOfObjects::Ptr trajectoryObject(const std::vector<mrpt::poses::CPose3D>& poses,
                                                   std::size_t frustums = 10);
 
-/** Saves map + camera path as an MRPT .3Dscene (SceneViewer3D), in full or not at all; throws
- * std::runtime_error naming the file on failure. */
+/** Loop closures as red lines between the camera positions of the pairs of `poses` indices. */
+mrpt::opengl::CSetOfObjects::Ptr loopObject(
+    const std::vector<mrpt::poses::CPose3D>& poses,
+    const std::vector<std::pair<std::size_t, std::size_t>>& loops);
+
+/** Saves map + camera path (+ loop closures) as an MRPT .3Dscene (SceneViewer3D), in full or not
+ * at all; throws std::runtime_error naming the file on failure. */
 void saveScene(const ColouredMap& map, const std::vector<mrpt::poses::CPose3D>& poses,
-               const std::string& path);
+               const std::string& path,
+               const std::vector<std::pair<std::size_t, std::size_t>>& loops = {});
 
 }  // namespace hrgbd

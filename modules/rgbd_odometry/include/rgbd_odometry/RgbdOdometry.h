@@ -30,6 +30,12 @@ class RgbdOdometry {
   /** Forgets everything: the next frame becomes the new origin. */
   void reset();
   const mrpt::poses::CPose3D& pose() const { return m_pose; }
+  /** The reference frames are registered against (the keyframe), with its pose; nullptr before
+   * the first frame or after reset(). */
+  const Frame* keyframe() const { return m_ref ? &m_ref->frame : nullptr; }
+  /** Moves the whole trajectory so far by `correction` (left-composed onto the keyframe's and the
+   * latest pose): how a pose-graph optimisation re-anchors the tracker. */
+  void correct(const mrpt::poses::CPose3D& correction);
 
  private:
   struct Reference {

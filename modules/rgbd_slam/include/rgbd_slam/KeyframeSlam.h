@@ -1,0 +1,110 @@
+#pragma once
+/** \file KeyframeSlam.h
+ * The SLAM mode over the tracker: every keyframe the tracker makes becomes a node of the pose
+ * graph, linked to the previous keyframe by the tracker's registration. Each new keyframe looks
+ * for loops among the keyframes near its estimated pose; every candidate goes through the
+ * tracking's own registration (sparse MSSE, then the dense refinement), must register on enough
+ * inliers and land near where the graph puts it, and becomes a loop edge. The graph is optimised
+ * after each accepted loop, with inconsistent loops dropped (PoseGraph). The loop search and the
+ * optimisation run in a background thread (`background`), and the tracker is moved onto the
+ * optimised poses when one finishes. Frames between keyframes follow their keyframe. */
+#include <condition_variable>
+#include <cstddef>
+#include <deque>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <utility>
+#include <vector>
+
+#include "rgbd_odometry/RgbdOdometry.h"
+#include "rgbd_slam/PoseGraph.h"
+#include "rgbd_slam/SlamParams.h"
+#include "rgbd_slam/SlamPoses.h"
+
+namespace hrgbd {
+
+/** What the SLAM mode did so far. */
+struct SlamStats {
+  std::size_t keyframes = 0;
+  std::size_t candidates = 0;      //!< loop candidates verified
+  std::size_t loops_accepted = 0;  //!< passed verification and became loop edges
+  std::size_t loops_dropped = 0;   //!< loop edges dropped as inconsistent by the optimisation
+  std::size_t optimizations = 0;
+  std::vector<double> search_ms;    //!< [ms] loop search and verification, per keyframe
+  std::vector<double> optimize_ms;  //!< [ms] per optimisation
+};
+
+/** "SLAM: N keyframes, ... loops ..., search ms median ..., optimisation ms median ...\n" */
+std::string toText(const SlamStats& s);
+
+class KeyframeSlam {
+ public:
+  /** Loop candidates are verified with makeRegistration(`odometry`): the product's methods only
+   * (throws ConfigError for a baseline or peer). */
+  KeyframeSlam(const SlamParams& params, const OdometryParams& odometry);
+  ~KeyframeSlam();
+  KeyframeSlam(const KeyframeSlam&) = delete;
+  KeyframeSlam& operator=(const KeyframeSlam&) = delete;
+
+  /** After `tracker` processed a frame (result `r`): keeps the frame's place relative to its
+   * keyframe, hands a new keyframe to the loop search, and applies an optimisation that has
+   * finished to the tracker; `r.pose` follows. Returns true when the poses changed (an
+   * optimisation was applied): poses() then gives the corrected ones. */
+  bool add(FrameResult& r, RgbdOdometry& tracker);
+  /** Waits for the loop search to finish the keyframes handed to it and optimises. */
+  void flush();
+  /** The current estimate of every frame's pose and the loops. */
+  SlamPoses poses() const;
+  /** Statistics so far (waits for nothing). */
+  SlamStats stats() const;
+  /** The pose graph (call flush() first for a complete one). */
+  const PoseGraph& graph() const { return m_graph; }
+  /** Forgets everything (the tracker was reset): the next frame starts a new graph. */
+  void reset();
+
+ private:
+  struct Job {
+    std::size_t id;
+    std::shared_ptr<Frame> frame;
+    std::optional<PoseGraphEdge> odometry;  //!< from the previous keyframe
+    mrpt::poses::CPose3D pose;              //!< tracker's estimate (the first node only)
+  };
+  struct Place {
+    std::size_t keyframe;
+    mrpt::poses::CPose3D relative;  //!< the frame's pose in its keyframe's
+  };
+  void work();
+  void process(Job job);
+  std::vector<std::size_t> candidates(std::size_t id) const;
+  std::optional<PoseGraphEdge> verify(std::size_t id, std::size_t candidate);
+  void applyOptimization(RgbdOdometry& tracker);
+  /** Makes the graph's poses and loops the latest optimisation (under m_mutex). */
+  void publish();
+  void stopWorker();
+
+  SlamParams m_params;
+  OdometryParams m_odometry;
+  // tracking thread
+  std::vector<Place> m_places;                     //!< per frame
+  std::vector<mrpt::poses::CPose3D> m_tracker_kf;  //!< keyframe poses as the tracker has them
+  std::vector<std::size_t> m_keyframe_frame;       //!< frame index of each keyframe
+  std::size_t m_applied = 0;                       //!< optimisations applied to the tracker
+  // worker (the graph, the keyframes and the registration); m_mutex guards what both touch
+  std::unique_ptr<Registration> m_registration;
+  std::vector<std::shared_ptr<Frame>> m_keyframes;
+  PoseGraph m_graph;
+  mutable std::mutex m_mutex;
+  std::condition_variable m_wake, m_idle;
+  std::deque<Job> m_queue;
+  bool m_busy = false, m_stop = false;
+  std::vector<mrpt::poses::CPose3D> m_optimized;  //!< node poses of the latest optimisation
+  std::vector<PoseGraphEdge> m_loops;             //!< its loop edges that hold (keyframe ids)
+  std::size_t m_optimizations = 0;
+  SlamStats m_stats;
+  std::thread m_thread;
+};
+
+}  // namespace hrgbd

@@ -1,0 +1,59 @@
+#pragma once
+/** \file SlamParams.h
+ * Parameters of the SLAM mode. INI section [Slam]. */
+#include "rgbd_core/Params.h"
+
+namespace hrgbd {
+
+struct SlamParams : public Params<SlamParams> {
+  bool enabled = false;    //!< false: the odometry alone, exactly as without this section
+  bool background = true;  //!< loop search and optimisation in a thread beside the tracking
+  /** [m] keyframes whose estimated position is within this distance of a new keyframe ... */
+  double loop_search_radius = 0.6;
+  double loop_search_angle_deg = 35;  //!< [deg] ... and whose view is within this rotation
+  int loop_max_candidates = 3;        //!< [count] candidates verified per new keyframe
+  int loop_min_separation = 3;        //!< [keyframes] candidates at least this far apart in id
+  int loop_min_inliers = 40;          //!< [count] a loop needs at least this many sparse inliers
+  /** [m] a verified loop that moves the candidate further than this from where the graph puts it
+   * is refused (the registration found another place) ... */
+  double loop_max_discrepancy = 0.3;
+  double loop_max_discrepancy_deg = 15;  //!< [deg] ... or turns it further than this
+  /** [m] standard deviation of an edge's translation registered on 100 inliers (it grows as
+   * 1/sqrt(inliers)); the rotation's is this over a 1.5 m lever arm */
+  double edge_sigma = 0.01;
+  /** a loop edge's sigmas are this many times those of a tracking edge on as many inliers: loops
+   * are registered across wider baselines (measured: loop edges up to 2.4 cm off the ground
+   * truth with 80+ inliers on the plain structure, 1.6 cm on the simulated desk). Aligned ATE
+   * for 1 / 3 / 6: fr1/rpy 0.0191 / 0.0163 / 0.0147, teddy 0.0090 / 0.0085 / 0.0087, plain
+   * structure 0.0064 / 0.0061 / 0.0055, cabinet 0.0929 / 0.1026 / 0.1040 m */
+  double loop_sigma_factor = 6;
+  /** chi-square of a loop edge after optimisation beyond which it is dropped as inconsistent
+   * with the others (99.9 % of chi-square with 6 degrees of freedom: 22.46) */
+  double loop_max_chi2 = 22.46;
+  int optimizer_iterations = 100;  //!< [count] Levenberg-Marquardt iterations per optimisation
+
+  template <class P, class V>
+  static void declare(P& p, V& v) {
+    HRGBD_PARAM(enabled, "SLAM mode: keyframe pose graph with loop closures");
+    HRGBD_PARAM(background, "loop search and optimisation in a background thread");
+    HRGBD_PARAM(loop_search_radius, "[m] loop candidates: keyframes this near", Range::above(0));
+    HRGBD_PARAM(loop_search_angle_deg, "[deg] loop candidates: view within this rotation",
+                Range::openClosed(0, 180));
+    HRGBD_PARAM(loop_max_candidates, "[count] candidates verified per keyframe", Range::atLeast(0));
+    HRGBD_PARAM(loop_min_separation, "[keyframes] candidates at least this far apart",
+                Range::atLeast(2));
+    HRGBD_PARAM(loop_min_inliers, "[count] sparse inliers a loop needs", Range::atLeast(3));
+    HRGBD_PARAM(loop_max_discrepancy, "[m] verified loop further from the graph: refused",
+                Range::above(0));
+    HRGBD_PARAM(loop_max_discrepancy_deg, "[deg] verified loop turned further: refused",
+                Range::openClosed(0, 180));
+    HRGBD_PARAM(edge_sigma, "[m] edge translation sigma at 100 inliers", Range::above(0));
+    HRGBD_PARAM(loop_sigma_factor, "loop edge sigmas: this times a tracking edge's",
+                Range::atLeast(1));
+    HRGBD_PARAM(loop_max_chi2, "loop edges beyond this chi-square after optimisation: dropped",
+                Range::above(0));
+    HRGBD_PARAM(optimizer_iterations, "[count] Levenberg-Marquardt iterations", Range::atLeast(1));
+  }
+};
+
+}  // namespace hrgbd

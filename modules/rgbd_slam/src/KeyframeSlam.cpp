@@ -1,0 +1,265 @@
+#include "rgbd_slam/KeyframeSlam.h"
+
+#include <mrpt/core/bits_math.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+#include "rgbd_core/Timing.h"
+#include "rgbd_eval/Evaluate.h"
+#include "rgbd_odometry/RigidFit.h"
+
+namespace hrgbd {
+namespace {
+
+double angleRad(const mrpt::poses::CPose3D& d) {
+  return Eigen::AngleAxisd(toIsometry(d).rotation()).angle();
+}
+
+constexpr double kLever = 1.5;  // [m] typical depth: rotation sigma = translation sigma / lever
+
+/** Information of a registration on `inliers` sparse inliers (dense-only: as 10). */
+mrpt::math::CMatrixDouble66 fitInformation(const SlamParams& p, std::size_t inliers, bool loop) {
+  const double sigma = p.edge_sigma * std::sqrt(100.0 / std::max<double>(inliers, 10)) *
+                       (loop ? p.loop_sigma_factor : 1.0);
+  return edgeInformation(sigma, sigma / kLever);
+}
+
+}  // namespace
+
+std::string toText(const SlamStats& s) {
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(1) << "SLAM: " << s.keyframes << " keyframes, "
+      << s.candidates << " loop candidates verified, " << s.loops_accepted << " loops accepted, "
+      << s.loops_dropped << " dropped as inconsistent; loop search median "
+      << percentile(s.search_ms, 0.5) << " ms per keyframe, " << s.optimizations
+      << " optimisations, median " << percentile(s.optimize_ms, 0.5) << " ms\n";
+  return out.str();
+}
+
+KeyframeSlam::KeyframeSlam(const SlamParams& params, const OdometryParams& odometry)
+    : m_params(params), m_odometry(odometry), m_registration(makeRegistration(odometry)) {
+  if (m_params.background) m_thread = std::thread([this] { work(); });
+}
+
+KeyframeSlam::~KeyframeSlam() { stopWorker(); }
+
+void KeyframeSlam::stopWorker() {
+  if (!m_thread.joinable()) return;
+  {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    m_stop = true;
+    m_queue.clear();  // keyframes not searched yet are dropped with the rest
+  }
+  m_wake.notify_all();
+  m_thread.join();
+}
+
+bool KeyframeSlam::add(FrameResult& r, RgbdOdometry& tracker) {
+  if (r.keyframe && r.registered() && tracker.keyframe()) {
+    Job job{m_tracker_kf.size(), std::make_shared<Frame>(*tracker.keyframe()), std::nullopt,
+            r.pose};
+    job.frame->guess.reset();
+    if (!m_tracker_kf.empty())
+      job.odometry = PoseGraphEdge{m_tracker_kf.size() - 1, m_tracker_kf.size(),
+                                   (-m_tracker_kf.back()) + r.pose,
+                                   fitInformation(m_params, r.inliers, false), false};
+    m_tracker_kf.push_back(r.pose);
+    m_keyframe_frame.push_back(m_places.size());
+    if (m_params.background) {
+      {
+        std::lock_guard<std::mutex> lock(m_mutex);
+        m_queue.push_back(std::move(job));
+      }
+      m_wake.notify_all();
+    } else {
+      process(std::move(job));
+    }
+  }
+  if (m_tracker_kf.empty()) {  // no keyframe yet (a first frame without depth): stays at origin
+    m_places.push_back({0, r.pose});
+    return false;
+  }
+  m_places.push_back({m_tracker_kf.size() - 1, (-m_tracker_kf.back()) + r.pose});
+  const std::size_t before = m_applied;
+  applyOptimization(tracker);
+  r.pose = tracker.pose();
+  return m_applied != before;
+}
+
+void KeyframeSlam::applyOptimization(RgbdOdometry& tracker) {
+  std::vector<mrpt::poses::CPose3D> optimized;
+  {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    if (m_optimizations == m_applied) return;
+    m_applied = m_optimizations;
+    optimized = m_optimized;
+  }
+  if (optimized.empty()) return;
+  // the newest optimised keyframe moves to its optimised pose, and everything after with it
+  const std::size_t k = optimized.size() - 1;
+  const mrpt::poses::CPose3D correction = optimized[k] + (-m_tracker_kf[k]);
+  tracker.correct(correction);
+  for (std::size_t i = 0; i < m_tracker_kf.size(); ++i)
+    m_tracker_kf[i] = i <= k ? optimized[i] : toPose(toIsometry(correction + m_tracker_kf[i]));
+}
+
+void KeyframeSlam::work() {
+  std::unique_lock<std::mutex> lock(m_mutex);
+  for (;;) {
+    m_wake.wait(lock, [&] { return m_stop || !m_queue.empty(); });
+    if (m_queue.empty()) return;  // stopping, nothing left
+    Job job = std::move(m_queue.front());
+    m_queue.pop_front();
+    m_busy = true;
+    lock.unlock();
+    process(std::move(job));
+    lock.lock();
+    m_busy = false;
+    if (m_queue.empty()) m_idle.notify_all();
+  }
+}
+
+void KeyframeSlam::process(Job job) {
+  const std::size_t id = job.id;
+  m_keyframes.push_back(std::move(job.frame));
+  if (job.odometry) {
+    m_graph.addNode(m_graph.pose(job.odometry->from) + job.odometry->relative);
+    m_graph.addEdge(*job.odometry);
+  } else {
+    m_graph.addNode(job.pose);
+  }
+  double search_ms = 0;
+  std::size_t verified = 0, accepted = 0;
+  timed(search_ms, [&] {
+    for (std::size_t c : candidates(id)) {
+      ++verified;
+      if (auto edge = verify(id, c)) m_graph.addEdge(*edge), ++accepted;
+    }
+    return 0;
+  });
+  std::optional<PoseGraphOptimization> opt;
+  if (accepted > 0) opt = m_graph.optimize(m_params.loop_max_chi2, m_params.optimizer_iterations);
+  std::lock_guard<std::mutex> lock(m_mutex);
+  m_stats.keyframes = m_graph.nodes();
+  m_stats.candidates += verified;
+  m_stats.loops_accepted += accepted;
+  m_stats.search_ms.push_back(search_ms);
+  if (opt) {
+    m_stats.loops_dropped += opt->dropped.size();
+    m_stats.optimize_ms.push_back(opt->ms);
+    ++m_stats.optimizations;
+    publish();
+  }
+}
+
+void KeyframeSlam::publish() {
+  m_optimized = m_graph.poses();
+  m_loops.clear();
+  const auto& edges = m_graph.edges();
+  for (std::size_t i = 0; i < edges.size(); ++i)
+    if (edges[i].loop && m_graph.active(i)) m_loops.push_back(edges[i]);
+  ++m_optimizations;
+}
+
+std::vector<std::size_t> KeyframeSlam::candidates(std::size_t id) const {
+  const auto sep = static_cast<std::size_t>(m_params.loop_min_separation);
+  if (id < sep) return {};
+  const auto& here = m_graph.pose(id);
+  std::vector<std::pair<double, std::size_t>> near;  // (view distance, keyframe)
+  for (std::size_t j = 0; j + sep <= id; ++j) {
+    const auto d = (-m_graph.pose(j)) + here;
+    const double metres = d.norm(), angle = angleRad(d);
+    if (metres <= m_params.loop_search_radius &&
+        angle <= mrpt::DEG2RAD(m_params.loop_search_angle_deg))
+      near.emplace_back(metres + kLever * angle, j);
+  }
+  std::sort(near.begin(), near.end());
+  // the nearest views, spread over the sequence: each at least loop_min_separation keyframes
+  // from those already chosen
+  std::vector<std::size_t> out;
+  for (const auto& [score, j] : near) {
+    if (out.size() >= static_cast<std::size_t>(m_params.loop_max_candidates)) break;
+    if (std::all_of(out.begin(), out.end(),
+                    [&, j = j](std::size_t c) { return (j > c ? j - c : c - j) >= sep; }))
+      out.push_back(j);
+  }
+  return out;
+}
+
+std::optional<PoseGraphEdge> KeyframeSlam::verify(std::size_t id, std::size_t candidate) {
+  Frame cur = *m_keyframes[id];  // the guess is this attempt's own
+  const mrpt::poses::CPose3D predicted = (-m_graph.pose(candidate)) + m_graph.pose(id);
+  cur.guess = toIsometry(predicted);
+  const RegistrationResult reg = m_registration->align(cur, *m_keyframes[candidate]);
+  if (!reg.ok() || reg.inliers < static_cast<std::size_t>(m_params.loop_min_inliers))
+    return std::nullopt;
+  const mrpt::poses::CPose3D measured = toPose(reg.T);
+  const auto d = (-predicted) + measured;
+  if (d.norm() > m_params.loop_max_discrepancy ||
+      angleRad(d) > mrpt::DEG2RAD(m_params.loop_max_discrepancy_deg))
+    return std::nullopt;
+  return PoseGraphEdge{candidate, id, measured, fitInformation(m_params, reg.inliers, true), true};
+}
+
+void KeyframeSlam::flush() {
+  if (m_params.background) {
+    std::unique_lock<std::mutex> lock(m_mutex);
+    m_idle.wait(lock, [&] { return m_queue.empty() && !m_busy; });
+  }
+  if (m_graph.nodes() == 0) return;
+  const auto opt = m_graph.optimize(m_params.loop_max_chi2, m_params.optimizer_iterations);
+  std::lock_guard<std::mutex> lock(m_mutex);
+  m_stats.loops_dropped += opt.dropped.size();
+  m_stats.optimize_ms.push_back(opt.ms);
+  ++m_stats.optimizations;
+  publish();
+}
+
+SlamPoses KeyframeSlam::poses() const {
+  std::vector<mrpt::poses::CPose3D> optimized;
+  std::vector<PoseGraphEdge> loops;
+  {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    optimized = m_optimized;
+    loops = m_loops;
+  }
+  auto keyframe = [&](std::size_t k) {
+    if (k < optimized.size()) return optimized[k];
+    if (k < m_tracker_kf.size()) return m_tracker_kf[k];
+    return mrpt::poses::CPose3D();
+  };
+  SlamPoses out;
+  for (const auto& p : m_places) out.poses.push_back(keyframe(p.keyframe) + p.relative);
+  for (const auto& e : loops) {
+    out.loops.emplace_back(m_keyframe_frame.at(e.from), m_keyframe_frame.at(e.to));
+    out.loop_measured.push_back(e.relative);
+  }
+  return out;
+}
+
+SlamStats KeyframeSlam::stats() const {
+  std::lock_guard<std::mutex> lock(m_mutex);
+  return m_stats;
+}
+
+void KeyframeSlam::reset() {
+  stopWorker();
+  m_places.clear();
+  m_tracker_kf.clear();
+  m_keyframe_frame.clear();
+  m_keyframes.clear();
+  m_graph = PoseGraph();
+  m_queue.clear();
+  m_optimized.clear();
+  m_loops.clear();
+  m_stop = m_busy = false;
+  m_applied = m_optimizations = 0;
+  m_stats = SlamStats();
+  m_registration = makeRegistration(m_odometry);
+  if (m_params.background) m_thread = std::thread([this] { work(); });
+}
+
+}  // namespace hrgbd

@@ -1,0 +1,106 @@
+#include "rgbd_slam/PoseGraph.h"
+
+#include <mrpt/graphslam/levmarq.h>
+#include <mrpt/poses/Lie/SE.h>
+
+#include <filesystem>
+#include <stdexcept>
+
+#include "rgbd_core/OutputFile.h"
+#include "rgbd_core/Timing.h"
+
+namespace hrgbd {
+
+mrpt::math::CMatrixDouble66 edgeInformation(double metres, double radians) {
+  mrpt::math::CMatrixDouble66 info;
+  info.setZero();
+  for (int i = 0; i < 3; ++i) info(i, i) = 1.0 / (metres * metres);
+  for (int i = 3; i < 6; ++i) info(i, i) = 1.0 / (radians * radians);
+  return info;
+}
+
+double edgeChi2(const PoseGraphEdge& e, const mrpt::poses::CPose3D& from,
+                const mrpt::poses::CPose3D& to) {
+  // the error as the optimiser sees it: log(relative^-1 (+) from^-1 (+) to)
+  const mrpt::poses::CPose3D d = (-e.relative) + ((-from) + to);
+  const auto err = mrpt::poses::Lie::SE<3>::log(d);
+  double chi2 = 0;
+  for (int i = 0; i < 6; ++i)
+    for (int j = 0; j < 6; ++j) chi2 += err[i] * e.information(i, j) * err[j];
+  return chi2;
+}
+
+std::size_t PoseGraph::addNode(const mrpt::poses::CPose3D& pose) {
+  m_poses.push_back(pose);
+  return m_poses.size() - 1;
+}
+
+void PoseGraph::addEdge(const PoseGraphEdge& edge) {
+  if (edge.from >= m_poses.size() || edge.to >= m_poses.size() || edge.from == edge.to)
+    throw std::invalid_argument("PoseGraph: edge between missing or equal nodes");
+  m_edges.push_back(edge);
+  m_active.push_back(true);
+}
+
+std::size_t PoseGraph::activeLoops() const {
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < m_edges.size(); ++i) n += m_edges[i].loop && m_active[i];
+  return n;
+}
+
+mrpt::graphs::CNetworkOfPoses3DInf PoseGraph::toMrpt() const {
+  mrpt::graphs::CNetworkOfPoses3DInf g;
+  g.root = 0;
+  for (std::size_t i = 0; i < m_poses.size(); ++i) g.nodes[i] = m_poses[i];
+  for (std::size_t i = 0; i < m_edges.size(); ++i) {
+    if (!m_active[i]) continue;
+    const auto& e = m_edges[i];
+    g.insertEdge(e.from, e.to, mrpt::poses::CPose3DPDFGaussianInf(e.relative, e.information));
+  }
+  return g;
+}
+
+PoseGraphOptimization PoseGraph::optimize(double max_chi2, int max_iterations) {
+  PoseGraphOptimization out;
+  double ms = 0;
+  timed(ms, [&] {
+    mrpt::containers::yaml extra;
+    extra["max_iterations"] = max_iterations;
+    for (;;) {
+      auto g = toMrpt();
+      mrpt::graphslam::TResultInfoSpaLevMarq info;
+      mrpt::graphslam::optimize_graph_spa_levmarq(g, info, nullptr, extra);
+      out.iterations += info.num_iters;
+      for (std::size_t i = 0; i < m_poses.size(); ++i) m_poses[i] = g.nodes.at(i);
+      // the least consistent loop edge, if beyond the limit, goes; then optimise again
+      std::size_t worst = m_edges.size();
+      double worst_chi2 = 0;
+      for (std::size_t i = 0; i < m_edges.size(); ++i) {
+        if (!m_edges[i].loop || !m_active[i]) continue;
+        const double c = edgeChi2(m_edges[i], m_poses[m_edges[i].from], m_poses[m_edges[i].to]);
+        if (c > worst_chi2) worst_chi2 = c, worst = i;
+      }
+      if (worst == m_edges.size() || worst_chi2 <= max_chi2) {
+        out.largest_loop_chi2 = worst_chi2;
+        break;
+      }
+      m_active[worst] = false;
+      out.dropped.push_back(worst);
+    }
+    return 0;
+  });
+  out.ms = ms;
+  return out;
+}
+
+void PoseGraph::save(const std::string& path) const {
+  OutputFile file(path, "pose graph");
+  try {
+    toMrpt().saveToTextFile(file.writePath());
+  } catch (const std::exception& e) {
+    file.fail(e.what());
+  }
+  file.commit();
+}
+
+}  // namespace hrgbd
