@@ -1,7 +1,7 @@
 # The packages the hrgbd libraries link against. Included by the top-level CMakeLists.txt and by
 # the installed hrgbdConfig.cmake, so the build and its consumers resolve the same imported
 # targets (mrpt::*, opencv_*, Open3D::Open3D, Eigen3::Eigen, nanoflann::nanoflann, JPEG::JPEG,
-# PkgConfig::OPENNI2, ZLIB::ZLIB). The includer defines hrgbd_dependency(<find_package arguments>):
+# PkgConfig::OPENNI2, PkgConfig::PLPLOT, ZLIB::ZLIB). The includer defines hrgbd_dependency(<find_package arguments>):
 # find_package(... REQUIRED) in the build, find_dependency() in the package config.
 hrgbd_dependency(mrpt-obs)
 hrgbd_dependency(mrpt-maps)
@@ -18,5 +18,7 @@ hrgbd_dependency(nanoflann)
 hrgbd_dependency(JPEG)
 hrgbd_dependency(ZLIB)
 hrgbd_dependency(PkgConfig)
-# The includer checks for the target PkgConfig::OPENNI2.
+# The includer checks for the targets PkgConfig::OPENNI2 and PkgConfig::PLPLOT.
 pkg_check_modules(OPENNI2 IMPORTED_TARGET libopenni2)
+# PLplot draws rgbd_eval's plots (Debian: libplplot-dev; its cairo driver writes PNG, SVG, PDF).
+pkg_check_modules(PLPLOT IMPORTED_TARGET plplot)

@@ -9,6 +9,7 @@ PKGS=(
   libopencv-dev libopencv-contrib-dev libopen3d-dev
   libeigen3-dev libnanoflann-dev libopenni2-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  libplplot-dev plplot-driver-cairo fonts-dejavu-core
   clang clang-format libclang-rt-dev
   xvfb x11-apps imagemagick
 )

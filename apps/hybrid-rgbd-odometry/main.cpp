@@ -15,7 +15,8 @@ int main(int argc, char** argv) {
   Text method("m", "method", "odometry method (default: the INI's [Odometry] method)", false, "",
               cmd.oneOf<hrgbd::Method>(), cmd);
   Text csv("", "csv", "per-frame CSV", false, "", "OUT.csv", cmd);
-  Text plot("", "plot", "evaluation PNG (with ground truth)", false, "", "OUT.png", cmd);
+  Text plot("", "plot", "evaluation figure (with ground truth): .png, .svg or .pdf", false, "",
+            "OUT.png", cmd);
   ValueArg<int> max_frames("n", "max-frames", "stop after N frames (0 = all)", false, 0,
                            cmd.atLeast(0, "N"), cmd);
   Text out_rawlog("", "output-rawlog", "the frames with their estimated poses (RawLogViewer)",

@@ -11,8 +11,10 @@ int main(int argc, char** argv) {
                                       "config.ini", "FILE.ini", cmd);
   TCLAP::UnlabeledMultiArg<std::string> extra(
       "sequences", "further TUM folders or rawlogs (with ground truth) to add", false, "PATH", cmd);
+  TCLAP::SwitchArg quiet("q", "quiet", "no progress lines", cmd);
   return cmd.run(argc, argv, [&] {
-    const auto report = hrgbd::runBenchmark(config.getValue(), extra.getValue(), std::cout);
+    const auto report =
+        hrgbd::runBenchmark(config.getValue(), extra.getValue(), std::cout, !quiet.getValue());
     std::cout << "finished in " << report.seconds << " s\n";
   });
 }

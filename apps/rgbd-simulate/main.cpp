@@ -1,5 +1,6 @@
 // rgbd-simulate: renders a simulated RGB-D sequence with exact ground truth.
 #include <mrpt/config/CConfigFileMemory.h>
+#include <unistd.h>
 
 #include <iostream>
 #include <sstream>
@@ -64,6 +65,7 @@ int main(int argc, char** argv) {
   TCLAP::SwitchArg print("", "print-config", "print the effective [Simulator] section", cmd);
   ValueArg<std::string> images("", "images", "colour storage in the rawlog (inline)", false,
                                "inline", cmd.oneOf<hrgbd::ImageStorage>(), cmd);
+  TCLAP::SwitchArg quiet("q", "quiet", "no progress line", cmd);
   return cmd.run(argc, argv, [&] {
     Ini ini;
     if (config.isSet()) copySimulatorSection(config.getValue(), ini);
@@ -86,7 +88,12 @@ int main(int argc, char** argv) {
          {p.motion == "sweep" ? "" : p.motion,
           motion.isSet() ? "the motion file (--motion)" : "the motion file ([Simulator] motion)"}},
         hrgbd::sim::writtenFiles(outputs));
-    const auto r = hrgbd::sim::simulate(p, outputs);
+    hrgbd::ProgressParams pp;
+    pp.total = static_cast<std::size_t>(p.frames);
+    pp.terminal = isatty(STDERR_FILENO);
+    hrgbd::Progress progress(std::cerr, pp);
+    const auto r = hrgbd::sim::simulate(p, outputs, quiet.getValue() ? nullptr : &progress);
+    if (!quiet.getValue()) progress.finish();
     std::cout << summary(p, r);
   });
 }

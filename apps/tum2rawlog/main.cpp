@@ -1,11 +1,14 @@
 // tum2rawlog TUM_FOLDER OUT.rawlog: converts a TUM RGB-D folder into an MRPT rawlog, with the
 // ground truth written beside it as OUT_groundtruth.txt.
+#include <unistd.h>
+
 #include <iostream>
 #include <vector>
 
 #include "rgbd_cli/CommandLine.h"
 #include "rgbd_core/Config.h"
 #include "rgbd_core/JobPaths.h"
+#include "rgbd_core/Progress.h"
 #include "rgbd_io/RawlogSource.h"
 #include "rgbd_io/RawlogWriter.h"
 #include "rgbd_io/TumSource.h"
@@ -18,6 +21,7 @@ int main(int argc, char** argv) {
                                    "FILE.ini", cmd);
   TCLAP::ValueArg<std::string> images("", "images", "colour storage (default inline)", false,
                                       "inline", cmd.oneOf<hrgbd::ImageStorage>(), cmd);
+  TCLAP::SwitchArg quiet("q", "quiet", "no progress line", cmd);
   return cmd.run(argc, argv, [&] {
     hrgbd::TumSourceParams params;
     if (!cfg.getValue().empty())
@@ -37,8 +41,17 @@ int main(int argc, char** argv) {
     hrgbd::checkJobPaths(inputs, outputs);
     std::cout << src.describe() << "\n";
     hrgbd::RawlogWriter writer(out.getValue(), storage);
-    while (auto obs = src.next()) writer.write(*obs);
+    hrgbd::ProgressParams pp;
+    pp.total = src.size();
+    pp.terminal = isatty(STDERR_FILENO);
+    hrgbd::Progress progress(std::cerr, pp);
+    std::size_t done = 0;
+    while (auto obs = src.next()) {
+      writer.write(*obs);
+      if (!quiet.getValue()) progress.update(++done);
+    }
     writer.close();
+    if (!quiet.getValue()) progress.finish();
     std::cout << "wrote " << writer.written() << " frames to " << out.getValue() << "\n";
     if (!src.groundTruth().empty()) {
       hrgbd::saveTumTrajectory(gt, src.groundTruth());

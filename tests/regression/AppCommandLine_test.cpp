@@ -2,7 +2,10 @@
 // without running the job; a refused command line exits 2 with "<app>: error:" and writes no
 // output file; a runtime error exits 1. Each refusal has a control: the same command line with a
 // valid value runs and writes its output, so "no file" means "nothing ran".
+#include <algorithm>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 #include "AppRun.h"
@@ -79,6 +82,73 @@ TEST(EvalCli, BadIntervalsAreRefusedAndNothingIsPlotted) {
   EXPECT_EQ(ok.code, 0) << ok.err;
   EXPECT_NE(ok.out.find("\"rpe_delta\": 0.500"), std::string::npos) << ok.out;
   EXPECT_TRUE(fs::exists(png));
+}
+
+TEST(EvalCli, PlotsThatCannotBeWrittenAreRefusedBeforeTheWork) {
+  const fs::path dir = hrgbd::test::tempDir("cli_eval_plot");
+  const auto gt = kSource + "/rawlogs/desk_near_groundtruth.txt";
+  const auto traj = (dir / "t.txt").string();
+  for (const auto& bad : {(dir / "p.jpg").string(), (dir / "p").string(),
+                          (dir / "missing" / "p.png").string(), dir.string()}) {
+    auto r = expectRefused("rgbd-eval", gt + " " + gt + " --plot " + bad);
+    EXPECT_NE(r.err.find("--plot"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("'" + bad), std::string::npos) << r.err;
+    r = expectRefused("hybrid-rgbd-odometry", "-q -n 3 -m rgb_only -i " + kSource +
+                                                  "/rawlogs/desk_near.rawlog -t " + traj +
+                                                  " --plot " + bad);
+    EXPECT_NE(r.err.find("'" + bad), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(traj)) << "nothing may run";
+  }
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 0);
+  // Controls: the format follows the extension.
+  const auto ok = runApp("rgbd-eval", gt + " " + gt + " --plot " + (dir / "p.svg").string());
+  EXPECT_EQ(ok.code, 0) << ok.err;
+  EXPECT_EQ(hrgbd::test::slurp(dir / "p.svg").rfind("<?xml", 0), 0u);
+  const auto run = runApp("hybrid-rgbd-odometry", "-q -n 3 -m rgb_only -i " + kSource +
+                                                      "/rawlogs/desk_near.rawlog -t " + traj +
+                                                      " --plot " + (dir / "p.pdf").string());
+  EXPECT_EQ(run.code, 0) << run.err;
+  EXPECT_EQ(hrgbd::test::slurp(dir / "p.pdf").rfind("%PDF-", 0), 0u);
+}
+
+TEST(EvalCli, SeveralEstimatesGiveTheFiguresOfSingleRuns) {
+  const fs::path dir = hrgbd::test::tempDir("cli_eval_multi");
+  const auto gt = kSource + "/rawlogs/desk_near_groundtruth.txt";
+  // Two estimates: the ground truth bent by a growing offset, every pose or every other one.
+  std::ifstream in(gt);
+  std::ofstream a(dir / "bent.txt"), b(dir / "sparse.txt");
+  int n = 0;
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream f(line);
+    std::string t;
+    double v[7];
+    f >> t >> v[0] >> v[1] >> v[2] >> v[3] >> v[4] >> v[5] >> v[6];
+    std::ostringstream out;
+    out << t << " " << v[0] + 0.002 * n << " " << v[1] << " " << v[2] - 0.001 * n;
+    for (int k = 3; k < 7; ++k) out << " " << v[k];
+    a << out.str() << "\n";
+    if (n++ % 2 == 0) b << out.str() << "\n";
+  }
+  a.close(), b.close();
+  const auto A = (dir / "bent.txt").string(), B = (dir / "sparse.txt").string();
+  const auto single_a = runApp("rgbd-eval", gt + " " + A + " --json");
+  const auto single_b = runApp("rgbd-eval", gt + " " + B + " --json");
+  const auto png = (dir / "both.png").string();
+  const auto both = runApp("rgbd-eval", gt + " " + A + " " + B + " --json --plot " + png);
+  ASSERT_EQ(single_a.code, 0) << single_a.err;
+  ASSERT_EQ(single_b.code, 0) << single_b.err;
+  ASSERT_EQ(both.code, 0) << both.err;
+  ASSERT_EQ(single_a.out.rfind("{\"ate_rmse\": ", 0), 0u) << "one estimate: one object";
+  auto body = [](const std::string& json) { return json.substr(1, json.size() - 2); };  // no {, \n
+  EXPECT_EQ(both.out, "[{\"estimate\": \"" + A + "\", " + body(single_a.out) +
+                          ",\n {\"estimate\": \"" + B + "\", " + body(single_b.out) + "]\n");
+  EXPECT_NE(single_a.out, single_b.out);
+  EXPECT_EQ(hrgbd::test::slurp(png).rfind("\x89PNG\r\n\x1a\n", 0), 0u);
+  const auto table = runApp("rgbd-eval", gt + " " + A + " " + B);
+  EXPECT_EQ(table.code, 0) << table.err;
+  EXPECT_EQ(std::count(table.out.begin(), table.out.end(), '\n'), 3) << table.out;
+  EXPECT_NE(table.out.find(B), std::string::npos) << table.out;
 }
 
 TEST(EvalCli, UnreadableInputIsARuntimeError) {

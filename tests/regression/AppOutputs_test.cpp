@@ -330,3 +330,31 @@ TEST(AppOutputs, EvalNeverPrintsInfOrNan) {
 }
 
 }  // namespace
+
+// ---- 5. progress on stderr when it is not a terminal; -q silences it -----------------------
+
+TEST(AppOutputs, ProgressIsShownWhenPipedAndQuietSilencesIt) {
+  const fs::path dir = hrgbd::test::tempDir("outputs_progress");
+  const auto rawlog = kSource + "/rawlogs/desk_near.rawlog";
+  auto r = runApp("hybrid-rgbd-odometry",
+                  "-n 3 -m rgb_only -i " + rawlog + " -t " + (dir / "t.txt").string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("3 frames in "), std::string::npos) << r.err;  // the final line
+  EXPECT_EQ(r.err.find('\r'), std::string::npos) << "whole lines in a file: " << r.err;
+  r = runApp("hybrid-rgbd-odometry",
+             "-q -n 3 -m rgb_only -i " + rawlog + " -t " + (dir / "t.txt").string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(r.err.empty()) << r.err;
+
+  for (const std::string quiet : {"", "-q "}) {
+    const auto tum = (dir / ("seq" + quiet.substr(0, 1))).string();
+    r = runApp("rgbd-simulate", quiet + "--scene wall -n 3 --tum " + tum);
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(r.err.empty(), !quiet.empty()) << r.err;
+    EXPECT_EQ(r.err.find("3 frames in ") != std::string::npos, quiet.empty()) << r.err;
+    r = runApp("tum2rawlog", quiet + tum + " " + tum + ".rawlog");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(r.err.empty(), !quiet.empty()) << r.err;
+    EXPECT_EQ(r.err.find("3 frames in ") != std::string::npos, quiet.empty()) << r.err;
+  }
+}

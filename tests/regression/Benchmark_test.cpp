@@ -59,6 +59,20 @@ TEST(Benchmark, ReducedSuiteFillsEveryTable) {
   int rows = 0;
   while (std::getline(csv, line)) ++rows;
   EXPECT_EQ(rows, 1 + 12);
+
+  // One figure per real sequence that ran (all four methods on it), linked from the report.
+  ASSERT_EQ(r.figures.size(), 1u);
+  EXPECT_EQ(r.figures[0].sequence, "real/desk_near");
+  EXPECT_TRUE(r.figures[0].error.empty()) << r.figures[0].error;
+  EXPECT_EQ(r.figures[0].file, "plots/real_desk_near.png");
+  std::ifstream png(dir + "/benchmark/plots/real_desk_near.png", std::ios::binary);
+  std::string header(8, '\0');
+  png.read(header.data(), 8);
+  EXPECT_EQ(header, "\x89PNG\r\n\x1a\n");
+  EXPECT_NE(text.str().find("](plots/real_desk_near.png)"), std::string::npos);
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir + "/benchmark/plots"),
+                          std::filesystem::directory_iterator()),
+            1);
 }
 
 TEST(Benchmark, RejectsUnknownKeysAndMethods) {

@@ -2,6 +2,7 @@
 
 #include <mrpt/img/CImage.h>
 
+#include <algorithm>
 #include <cmath>
 #include <opencv2/core.hpp>
 
@@ -96,21 +97,21 @@ TEST(Evaluate, PublishedEstimatesWithRealTimestampGaps) {
   EXPECT_NEAR(orb.ate_rmse, 0.0081, 0.001);
   EXPECT_NEAR(rgbdslam.ate_rmse, 0.0135, 0.001);
 
-  // The plot is drawn: red estimate and blue ground-truth pixels exist.
+  // The plot is drawn: the estimate (Tableau blue) and the ground truth (dark grey) appear.
   const auto png = hrgbd::test::tempDir("evalplot") + "/p.png";
   hrgbd::plotEvaluation(orb, png, "fr2/desk ORB-SLAM2");
   mrpt::img::CImage img;
   ASSERT_TRUE(img.loadFromFile(png));
   const cv::Mat m = img.asCvMatRef();
-  int red = 0, blue = 0;
+  int blue = 0, grey = 0;
   for (int r = 0; r < m.rows; ++r)
     for (int c = 0; c < m.cols; ++c) {
       const auto px = m.at<cv::Vec3b>(r, c);  // BGR
-      red += px[2] > 180 && px[1] < 80 && px[0] < 80;
-      blue += px[0] > 180 && px[2] < 80;
+      blue += std::abs(px[0] - 180) < 25 && std::abs(px[1] - 119) < 25 && px[2] < 70;
+      grey += px[0] < 110 && px[0] > 40 && px[0] == px[1] && px[1] == px[2];
     }
-  EXPECT_GT(red, 500);
-  EXPECT_GT(blue, 500);
+  EXPECT_GT(blue, 2000);
+  EXPECT_GT(grey, 300);
 }
 
 TEST(Evaluate, ParametersThatAreNotPositiveAreRefused) {
@@ -183,4 +184,30 @@ TEST(Evaluate, NoRpeIntervalIsSaidSoAndJsonStaysValid) {
   EXPECT_NE(text.find("\"ate_rmse\": null"), std::string::npos) << text;
   EXPECT_NE(text.find("\"rpe_rot\": null"), std::string::npos) << text;
   for (const auto* token : {"inf", "nan"}) EXPECT_EQ(text.find(token), std::string::npos) << text;
+}
+
+TEST(Evaluate, SeveralEstimatesAsJsonArrayAndTable) {
+  const auto a = hrgbd::evaluateTrajectory(curve(), curve());
+  const auto b = hrgbd::evaluateTrajectory(line(0.1), line(0.1, CPose3D(0, 0, 0, 0.3, 0, 0)));
+  const auto json = hrgbd::toJsonArray({"a.txt", "dir/\"b\".txt"}, {a, b});
+  EXPECT_EQ(json, "[{\"estimate\": \"a.txt\", " + hrgbd::toJson(a).substr(1) +
+                      ",\n {\"estimate\": \"dir/\\\"b\\\".txt\", " + hrgbd::toJson(b).substr(1) +
+                      "]\n");
+  const auto table = hrgbd::toTable({"a.txt", "b.txt"}, {a, b});
+  EXPECT_EQ(std::count(table.begin(), table.end(), '\n'), 3) << table;
+  EXPECT_NE(table.find("a.txt"), std::string::npos);
+  EXPECT_NE(table.find(" 101 "), std::string::npos) << table;
+  EXPECT_THROW(hrgbd::toTable({"a.txt"}, {a, b}), std::out_of_range);
+}
+
+TEST(Evaluate, RpeSeriesMatchesTheFigures) {
+  const auto r = hrgbd::evaluateTrajectory(curve(), line(0.2));
+  ASSERT_EQ(r.rpe_t.size(), r.rpe_pairs);
+  ASSERT_EQ(r.rpe_trans_error.size(), r.rpe_pairs);
+  ASSERT_EQ(r.rpe_rot_error.size(), r.rpe_pairs);
+  double s = 0;
+  for (double e : r.rpe_trans_error) s += e * e;
+  EXPECT_NEAR(std::sqrt(s / r.rpe_pairs), r.rpe_trans, 1e-12);
+  EXPECT_TRUE(std::is_sorted(r.rpe_t.begin(), r.rpe_t.end()));
+  EXPECT_DOUBLE_EQ(r.rpe_t.front(), 100.0);
 }

@@ -164,17 +164,41 @@ TEST(ColouredMapSink, OnlyRegisteredFramesEnterTheMapEveryFrameThePath) {
   EXPECT_TRUE(sink.path().empty());
 }
 
-TEST(ProgressSink, RedrawsOneLineAndEndsIt) {
+TEST(ProgressSink, CountsFramesAndTheUnregisteredAndEndsTheLine) {
   hrgbd::RawlogSource src(kDesk);
   const auto obs = src.next();
   std::ostringstream out, log;
-  hrgbd::ProgressSink sink(out);
-  sink.add(*obs, result(1, 0, kOk));
-  sink.add(*obs, result(2, 0, kLost));
+  double now = 0;
+  hrgbd::ProgressParams p;
+  p.total = 4;
+  p.terminal = true;
+  hrgbd::ProgressSink sink(out, p, [&] { return now; });
+  now = 1, sink.add(*obs, result(1, 0, kOk));
+  now = 2, sink.add(*obs, result(2, 0, kLost));
   sink.finish(log);
   EXPECT_EQ(out.str().back(), '\n');
-  EXPECT_NE(out.str().rfind("\r  frame      2  registered      1"), std::string::npos) << out.str();
+  EXPECT_NE(out.str().find("\r2/4 frames (50%), 1.0 frames/s, 2.0 s left, 1 not registered"),
+            std::string::npos)
+      << out.str();
+  EXPECT_NE(out.str().find("\r2 frames in 2.0 s, 1.0 frames/s, 1 not registered"),
+            std::string::npos)
+      << out.str();
   EXPECT_TRUE(log.str().empty());
+}
+
+TEST(ProgressSink, TheTotalIsTheSourcesFrameCountCutByMaxFrames) {
+  hrgbd::RawlogSource src(kDesk);
+  const auto all = src.frameCount();
+  EXPECT_GT(all, 10u);
+  std::size_t n = 0;
+  while (src.next()) ++n;
+  EXPECT_EQ(all, n) << "counted without loading images, as many as next() gives";
+  EXPECT_EQ(src.frameCount(5), 5u);
+  EXPECT_EQ(src.frameCount(all + 5), all);
+  EXPECT_EQ(hrgbd::frameProgress(src, 0, "x").total, all);
+  EXPECT_EQ(hrgbd::frameProgress(src, 5, "x").total, 5u);
+  EXPECT_EQ(hrgbd::frameProgress(src, all + 5, "x").total, all);
+  EXPECT_EQ(hrgbd::frameProgress(src, 0, "x").label, "x");
 }
 
 TEST(MapSinks, WriteFailuresAreErrorsAndUnfinishedFilesDoNotAppear) {

@@ -1,7 +1,5 @@
 #include "rgbd_app/Playback.h"
 
-#include <unistd.h>
-
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -143,9 +141,10 @@ struct PlaybackSinks {
 };
 
 /** Opens the output files (trajectory first, then CSV, rawlog); throws if one cannot be written. */
-PlaybackSinks makeSinks(const PlaybackJob& job, const FrameSource& source, bool progress_bar) {
+PlaybackSinks makeSinks(const PlaybackJob& job, const FrameSource& source,
+                        const ProgressParams* progress) {
   PlaybackSinks s;
-  if (progress_bar) s.progress = std::make_unique<ProgressSink>(std::cerr);
+  if (progress) s.progress = std::make_unique<ProgressSink>(std::cerr, *progress);
   s.summary = std::make_unique<SummarySink>(source);
   s.trajectory = std::make_unique<TrajectorySink>(
       job.trajectory, std::string("# hybrid-rgbd-odometry ") + toString(job.odometry.method) +
@@ -204,11 +203,18 @@ PlaybackSummary runPlayback(const PlaybackOptions& opt, std::ostream& log) {
   auto inputs = source->inputs();
   inputs.push_back({opt.config, "the configuration file (--config)"});
   checkJobPaths(inputs, job.written);
+  try {
+    if (!opt.plot.empty()) checkPlotPath(opt.plot, "--plot");  // before the run, not after it
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
+  }
   log << "input: " << source->describe() << "\nmethod: " << toString(job.odometry.method) << "\n";
 
-  const auto sinks = makeSinks(job, *source, opt.progress && isatty(STDERR_FILENO));
-  FrameLoop loop(*source, std::move(odometry), sinks.list(),
-                 opt.max_frames > 0 ? static_cast<std::size_t>(opt.max_frames) : 0);
+  const auto max_frames = opt.max_frames > 0 ? static_cast<std::size_t>(opt.max_frames) : 0;
+  ProgressParams progress;  // frameProgress() may count a rawlog's frames: only when shown
+  if (opt.progress) progress = frameProgress(*source, max_frames, opt.progress_label);
+  const auto sinks = makeSinks(job, *source, opt.progress ? &progress : nullptr);
+  FrameLoop loop(*source, std::move(odometry), sinks.list(), max_frames);
   if (job.slam.enabled) loop.setSlam(std::make_unique<KeyframeSlam>(job.slam, job.odometry));
   if (!job.graph.empty() && !job.slam.enabled)
     throw UsageError("a pose graph (--graph / [Playback] graph) needs the SLAM mode (--slam)");

@@ -1,5 +1,8 @@
 #include "rgbd_app/TextSinks.h"
 
+#include <unistd.h>
+
+#include <algorithm>
 #include <iomanip>
 #include <ostream>
 #include <stdexcept>
@@ -81,11 +84,20 @@ void CsvSink::finish(std::ostream& log) {
 void ProgressSink::add(const mrpt::obs::CObservation3DRangeScan&, const FrameResult& r) {
   ++m_frames;
   m_registered += r.registered();
-  m_out << "\r  frame " << std::setw(6) << m_frames << "  registered " << std::setw(6)
-        << m_registered << "  " << std::fixed << std::setprecision(1) << std::setw(6) << r.ms.total
-        << " ms/frame" << std::flush;
+  const auto lost = m_frames - m_registered;
+  m_progress.update(m_frames, lost ? std::to_string(lost) + " not registered" : "");
 }
 
-void ProgressSink::finish(std::ostream&) { m_out << "\n"; }
+void ProgressSink::finish(std::ostream&) { m_progress.finish(); }
+
+ProgressParams frameProgress(const FrameSource& source, std::size_t max_frames,
+                             const std::string& label) {
+  ProgressParams p;
+  p.label = label;
+  p.total = source.frameCount(max_frames);  // a rawlog is read up to max_frames at most
+  if (p.total == 0) p.total = max_frames;   // a live sensor stops there too
+  p.terminal = isatty(STDERR_FILENO);
+  return p;
+}
 
 }  // namespace hrgbd

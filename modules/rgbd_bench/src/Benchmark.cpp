@@ -16,6 +16,7 @@
 #include "rgbd_core/Config.h"
 #include "rgbd_core/JobPaths.h"
 #include "rgbd_core/OutputFile.h"
+#include "rgbd_eval/EvalPlot.h"
 #include "rgbd_io/RawlogSource.h"
 #include "rgbd_sim/Scene.h"
 #include "rgbd_sim/Simulator.h"
@@ -127,7 +128,7 @@ BenchmarkParams loadBenchmarkParams(const std::string& config_file) {
 /** One sequence x method through runPlayback(), writing <traj_dir>/<sequence>__<method>.txt
  * and .csv. An error is recorded in the run, not thrown. */
 BenchRun runOne(const BenchSequence& seq, const std::string& method, const std::string& config_file,
-                const fs::path& traj_dir, const BenchmarkParams& p) {
+                const fs::path& traj_dir, const BenchmarkParams& p, bool progress) {
   BenchRun run{seq.name, method, {}, ""};
   auto stem = seq.name + "__" + method;
   std::replace(stem.begin(), stem.end(), '/', '_');
@@ -140,7 +141,8 @@ BenchRun runOne(const BenchSequence& seq, const std::string& method, const std::
   if (method == "hybrid_slam") opt.method = "hybrid", opt.slam = true;
   if (method == "hybrid_paper") opt.method = "hybrid", opt.config = p.paper_config;
   opt.max_frames = p.max_frames;
-  opt.progress = false;
+  opt.progress = progress;
+  opt.progress_label = seq.name + " " + method;
   opt.ini_outputs = false;
   std::ostringstream playback_log;
   try {
@@ -166,7 +168,7 @@ void logRun(const BenchRun& run, std::ostream& log) {
 
 /** Every method on every sequence that is not skipped, on one core. */
 std::vector<BenchRun> runAll(const std::vector<BenchSequence>& sequences, const BenchmarkParams& p,
-                             const std::string& config_file, std::ostream& log) {
+                             const std::string& config_file, std::ostream& log, bool progress) {
   // Every method on one core, as the targets are stated (OpenCV and Open3D would use both
   // otherwise); the caller's setting is restored however this returns.
   const ThreadLimit one_thread(1);
@@ -179,7 +181,7 @@ std::vector<BenchRun> runAll(const std::vector<BenchSequence>& sequences, const 
       continue;
     }
     for (const auto& method : p.methods) {
-      runs.push_back(runOne(seq, method, config_file, traj_dir, p));
+      runs.push_back(runOne(seq, method, config_file, traj_dir, p, progress));
       logRun(runs.back(), log);
     }
   }
@@ -214,10 +216,39 @@ void checkResultPaths(const BenchmarkParams& p, const std::string& config_file,
                          {results(p, "results.csv"), "[Benchmark] output_folder's results.csv"}});
 }
 
+/** One figure per real sequence that ran: every evaluated method against its ground truth. */
+std::vector<BenchFigure> plotRealSequences(const BenchmarkReport& report, const BenchmarkParams& p,
+                                           std::ostream& log) {
+  std::vector<BenchFigure> figures;
+  for (const auto& seq : report.sequences) {
+    if (!seq.scene_type.empty() || !seq.skip_reason.empty()) continue;
+    auto stem = seq.name;
+    std::replace(stem.begin(), stem.end(), '/', '_');
+    BenchFigure fig{seq.name, "plots/" + stem + ".png", ""};
+    std::vector<PlotSeries> series;
+    for (const auto& run : report.runs)
+      if (run.sequence == seq.name && run.error.empty() && run.summary.evaluated)
+        series.push_back({run.method, &run.summary.eval});
+    try {
+      if (series.empty()) throw std::runtime_error("no method was evaluated");
+      fs::create_directories(fs::path(p.output_folder) / "plots");
+      PlotParams pp;
+      pp.title = seq.name + ": every method against the ground truth";
+      plotEvaluations(series, results(p, fig.file), pp);
+      log << "figure: " << results(p, fig.file) << "\n";
+    } catch (const std::exception& e) {
+      fig.error = e.what();
+      log << seq.name << ": no figure: " << fig.error << "\n";
+    }
+    figures.push_back(fig);
+  }
+  return figures;
+}
+
 }  // namespace
 
 BenchmarkReport runBenchmark(const std::string& config_file, const std::vector<std::string>& extra,
-                             std::ostream& log) {
+                             std::ostream& log, bool progress) {
   const auto start = std::chrono::steady_clock::now();
   const auto p = loadBenchmarkParams(config_file);
   checkResultPaths(p, config_file, extra);
@@ -227,7 +258,8 @@ BenchmarkReport runBenchmark(const std::string& config_file, const std::vector<s
   report.machine = machineDescription();
   report.date = today();
   report.sequences = prepareSequences(p, extra, log);
-  report.runs = runAll(report.sequences, p, config_file, log);
+  report.runs = runAll(report.sequences, p, config_file, log, progress);
+  report.figures = plotRealSequences(report, p, log);
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   StreamOutput markdown(results(p, "results.md"), "benchmark results");

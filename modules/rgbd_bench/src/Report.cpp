@@ -240,6 +240,18 @@ std::string toMarkdown(const BenchmarkReport& r) {
     if (!run.error.empty())
       problems << "- " << run.sequence << " / " << run.method << ": error, " << run.error << "\n";
   if (!problems.str().empty()) out << "\n## Skipped sequences and errors\n\n" << problems.str();
+  if (!r.figures.empty()) {
+    out << "\n## Figures of the real sequences\n\n"
+        << "Every method's estimate (each aligned to the ground truth), the position error and "
+           "the RPE over time.\n";
+    for (const auto& f : r.figures) {
+      out << "\n### " << f.sequence << "\n\n";
+      if (f.error.empty())
+        out << "[![" << f.sequence << "](" << f.file << ")](" << f.file << ")\n";
+      else
+        out << "no figure: " << f.error << "\n";
+    }
+  }
   return out.str();
 }
 

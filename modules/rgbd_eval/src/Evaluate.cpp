@@ -37,7 +37,8 @@ void computeRpe(const std::vector<double>& t, const Trajectory& gt, const Trajec
                 double delta, EvalResult& r) {
   const double span = t.back() - t.front();
   r.rpe_delta_used = std::min(delta, span);
-  std::vector<double> et, er;
+  auto& et = r.rpe_trans_error;
+  auto& er = r.rpe_rot_error;
   std::size_t j = 0;
   for (std::size_t i = 0; i < t.size(); ++i) {
     j = std::max(j, i + 1);
@@ -48,6 +49,7 @@ void computeRpe(const std::vector<double>& t, const Trajectory& gt, const Trajec
     const auto dq = gt[j].pose - gt[i].pose;    // Q_i^-1 Q_j
     const auto dp = est[j].pose - est[i].pose;  // P_i^-1 P_j
     const auto e = dp - dq;                     // (Q_i^-1 Q_j)^-1 (P_i^-1 P_j)
+    r.rpe_t.push_back(t[i]);
     et.push_back(e.translation().norm() / dt);
     er.push_back(rotationAngleDeg(e) / dt);
   }
@@ -192,6 +194,55 @@ std::string toText(const EvalResult& r) {
                 "RPE rotation          %.4f deg/s\n",
                 r.rpe_trans, r.rpe_delta_used, r.rpe_pairs, r.rpe_rot);
   return out + buf;
+}
+
+std::string toJsonArray(const std::vector<std::string>& names,
+                        const std::vector<EvalResult>& results) {
+  auto quoted = [](const std::string& s) {
+    std::string out = "\"";
+    for (const unsigned char c : s) {
+      if (c == '"' || c == '\\') {
+        out += '\\';
+        out += static_cast<char>(c);
+      } else if (c < 0x20) {
+        char buf[8];
+        std::snprintf(buf, sizeof buf, "\\u%04x", c);
+        out += buf;
+      } else {
+        out += static_cast<char>(c);
+      }
+    }
+    return out + "\"";
+  };
+  std::string out = "[";
+  for (std::size_t k = 0; k < results.size(); ++k)
+    out += std::string(k ? ",\n " : "") + "{\"estimate\": " + quoted(names.at(k)) + ", " +
+           toJson(results[k]).substr(1);
+  return out + "]\n";
+}
+
+std::string toTable(const std::vector<std::string>& names, const std::vector<EvalResult>& results) {
+  int width = 8;
+  for (const auto& n : names) width = std::max(width, static_cast<int>(n.size()));
+  char buf[1024];
+  std::snprintf(buf, sizeof buf, "%-*s %7s %12s %12s %10s %12s\n", width, "estimate", "pairs",
+                "ATE RMSE [m]", "ATE mean [m]", "RPE [m/s]", "RPE [deg/s]");
+  std::string out = buf;
+  for (std::size_t k = 0; k < results.size(); ++k) {
+    const auto& r = results[k];
+    std::string rpe_t = "-", rpe_r = "-";
+    if (r.rpe_pairs > 0) {
+      std::snprintf(buf, sizeof buf, "%.4f", r.rpe_trans);
+      rpe_t = buf;
+      std::snprintf(buf, sizeof buf, "%.4f", r.rpe_rot);
+      rpe_r = buf;
+    }
+    std::snprintf(buf, sizeof buf, "%-*s %7zu %12.4f %12.4f %10s %12s\n", width,
+                  names.at(k).c_str(), r.pairs, r.ate_rmse, r.ate_mean_unaligned, rpe_t.c_str(),
+                  rpe_r.c_str());
+    out += buf;
+  }
+  return out;
 }
 
 RelativeCheck checkRelativePoses(const Trajectory& gt, const std::vector<RelativeMeasurement>& m,

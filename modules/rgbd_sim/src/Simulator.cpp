@@ -266,7 +266,7 @@ std::vector<JobPath> writtenFiles(const SimOutputs& outputs) {
   return out;
 }
 
-SimResult simulate(const SimParams& p, const SimOutputs& outputs) {
+SimResult simulate(const SimParams& p, const SimOutputs& outputs, Progress* progress) {
   const auto scene = makeScene(p.scene, p.far);
   const PinholeCamera cam;
   const FramePoses poses = framePoses(scene, p);
@@ -282,6 +282,7 @@ SimResult simulate(const SimParams& p, const SimOutputs& outputs) {
     const double t = kStart + poses.times[i];
     res.ground_truth.push_back({t, poses.path[i].pose});
     writer.write(t, frame);
+    if (progress) progress->update(static_cast<std::size_t>(i) + 1);
   }
   res.frames = p.frames;
   res.ms_per_frame = median(ms);

@@ -23,9 +23,9 @@ struct PlaybackOptions {
   std::string trajectory;  //!< output TUM trajectory
   std::string csv;         //!< output per-frame CSV ("" = none)
   std::string method;      //!< overrides [Odometry] method
-  std::string plot;        //!< evaluation PNG ("" = none)
+  std::string plot;        //!< evaluation figure, .png/.svg/.pdf ("" = none)
   int max_frames = 0;      //!< stop after this many frames (0 = all)
-  bool progress = true;    //!< progress bar on stderr
+  bool progress = true;    //!< progress line on stderr (rgbd_core/Progress.h)
   // Map and MRPT outputs ("" = from [Playback], where "" = none)
   std::string output_rawlog;  //!< the frames with their estimated pose as sensorPose
   std::string simplemap;      //!< CSimpleMap of (pose, frame) for observations2map
@@ -34,6 +34,8 @@ struct PlaybackOptions {
   bool slam = false;          //!< SLAM mode, whatever [Slam] enabled says
   std::string graph;          //!< SLAM mode: the pose graph, MRPT text format ("" = [Playback])
   bool ini_outputs = true;    //!< false: only the outputs set here (CSV, map, rawlog) are written
+
+  std::string progress_label;  //!< leads the progress line ("" = none)
 };
 
 /** Summary of a run. */

@@ -1,7 +1,7 @@
 #pragma once
 /** \file TextSinks.h
  * Sinks that write text as the frames come: the TUM trajectory, the per-frame CSV and the
- * progress bar. The files are OutputFiles (rgbd_core/OutputFile.h): each line is written and
+ * progress line. The files are OutputFiles (rgbd_core/OutputFile.h): each line is written and
  * flushed, with the write checked, to a temporary file beside the output, which finish() moves
  * into place; a run that fails leaves no partial trajectory or CSV under the output's name. */
 #include <iosfwd>
@@ -11,7 +11,9 @@
 
 #include "rgbd_app/FrameSink.h"
 #include "rgbd_core/OutputFile.h"
+#include "rgbd_core/Progress.h"
 #include "rgbd_core/Trajectory.h"
+#include "rgbd_io/FrameSource.h"
 
 namespace hrgbd {
 
@@ -63,18 +65,26 @@ class CsvSink : public FrameSink {
   StreamOutput m_file;
 };
 
-/** A one-line progress bar (frames, registered, time of the last frame) redrawn per frame. */
+/** The run's progress (rgbd_core/Progress.h): frames done of the total when known, frames per
+ * second, time left and frames not registered; redrawn in place on a terminal, a line now and
+ * then otherwise. */
 class ProgressSink : public FrameSink {
  public:
-  /** Draws on `out` (a terminal: the line is redrawn with '\r'). */
-  explicit ProgressSink(std::ostream& out) : m_out(out) {}
+  /** Writes to `out`; `clock` as Progress's (tests inject one). */
+  ProgressSink(std::ostream& out, const ProgressParams& params, Progress::Clock clock = {})
+      : m_progress(out, params, std::move(clock)) {}
   void add(const mrpt::obs::CObservation3DRangeScan& obs, const FrameResult& r) override;
-  /** Ends the bar's line on its own stream; `log` is not used. */
+  /** Writes the final line on its own stream; `log` is not used. */
   void finish(std::ostream& log) override;
 
  private:
-  std::ostream& m_out;
+  Progress m_progress;
   std::size_t m_frames = 0, m_registered = 0;
 };
+
+/** ProgressParams of a run over `source`: its frame count (FrameSource::frameCount(), at most
+ * `max_frames` when > 0), `label`, and whether stderr is a terminal. */
+ProgressParams frameProgress(const FrameSource& source, std::size_t max_frames,
+                             const std::string& label);
 
 }  // namespace hrgbd

@@ -74,10 +74,18 @@ struct BenchRun {
   std::string error;  //!< the run threw: what it said
 };
 
+/** The figure of one real sequence: every method's estimate against its ground truth. */
+struct BenchFigure {
+  std::string sequence;
+  std::string file;   //!< relative to [Benchmark] output_folder, e.g. "plots/real_x.png"
+  std::string error;  //!< not empty: no figure, and why
+};
+
 struct BenchmarkReport {
   std::vector<BenchSequence> sequences;
   std::vector<std::string> methods;
   std::vector<BenchRun> runs;
+  std::vector<BenchFigure> figures;  //!< one per real sequence that ran
   std::string config_file, machine, date;
   double seconds = 0;  //!< wall time of the whole benchmark
 };
@@ -89,11 +97,14 @@ std::vector<BenchSequence> prepareSequences(const BenchmarkParams& params,
                                             std::ostream& log);
 
 /** Loads [Benchmark] from `config_file` (paths relative to it), prepares the sequences and runs
- * every method on each with runPlayback(), on one thread. Runs that throw are recorded. */
+ * every method on each with runPlayback(), on one thread. Runs that throw are recorded. Each real
+ * sequence gets a figure of all methods against its ground truth (plotEvaluations()) in
+ * <output_folder>/plots/; one that cannot be drawn is recorded in the report. `progress`: each
+ * run shows its progress on stderr (rgbd_core/Progress.h), labelled "<sequence> <method>". */
 BenchmarkReport runBenchmark(const std::string& config_file, const std::vector<std::string>& extra,
-                             std::ostream& log);
+                             std::ostream& log, bool progress = true);
 
-/** The report as markdown: one table per metric, timing, paths, failures, targets. */
+/** The report as markdown: one table per metric, timing, paths, failures, targets, figures. */
 std::string toMarkdown(const BenchmarkReport& report);
 
 /** One CSV row per run with every figure. */

@@ -28,6 +28,10 @@ struct EvalResult {
   std::vector<double> t;
   Trajectory ground_truth, estimate_aligned;
   std::vector<double> error_aligned;  //!< [m]
+  // Per RPE interval, for plots: start time, translation and rotation error per second.
+  std::vector<double> rpe_t;            //!< [s] time stamp at the interval's start
+  std::vector<double> rpe_trans_error;  //!< [m/s]
+  std::vector<double> rpe_rot_error;    //!< [deg/s]
 };
 
 /** [m] Positions are evaluated up to this far from the origin (UTM coordinates fit): beyond it
@@ -50,6 +54,15 @@ std::string toJson(const EvalResult& r);
 
 /** Human-readable summary, one figure per line ("RPE none: ..." when rpe_pairs is 0). */
 std::string toText(const EvalResult& r);
+
+/** Several estimates as a JSON array, one toJson() object each with a first key "estimate"
+ * (names[k], e.g. the file), in order; ends with a newline. */
+std::string toJsonArray(const std::vector<std::string>& names,
+                        const std::vector<EvalResult>& results);
+
+/** Several estimates as a text table, a header and one row per estimate (names[k]): pairs, ATE
+ * RMSE, unaligned ATE mean [m], RPE translation [m/s] and rotation [deg/s] ("-" when none). */
+std::string toTable(const std::vector<std::string>& names, const std::vector<EvalResult>& results);
 
 /** A measured relative pose between two times (a loop closure): `relative` is the pose at
  * `t_to` in the frame of the pose at `t_from`. */

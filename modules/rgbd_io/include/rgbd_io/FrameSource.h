@@ -33,6 +33,13 @@ class FrameSource {
   /** The files and folders it reads, which no output may overwrite (checkJobPaths()); none for a
    * sensor. */
   virtual std::vector<JobPath> inputs() const { return {}; }
+  /** [count] Frames next() gives in all, when known or countable before the run (progress),
+   * or `at_most` if there are more (0 = no limit); 0 = unknown (a live sensor). May read the
+   * input once, up to `at_most` frames; never throws (0 instead). */
+  virtual std::size_t frameCount(std::size_t at_most = 0) const {
+    (void)at_most;
+    return 0;
+  }
   const SourceStats& stats() const { return m_stats; }
 
  protected:

@@ -27,6 +27,9 @@ class RawlogSource : public FrameSource {
   mrpt::obs::CObservation3DRangeScan::Ptr next() override;
   Trajectory groundTruth() const override { return m_ground_truth; }
   std::string describe() const override;
+  /** Counts the frames in a pass over the file that loads no external image (RawlogCount.cpp);
+   * 0 if the file cannot be read to its end (next() then names the problem). */
+  std::size_t frameCount(std::size_t at_most = 0) const override;
   /** The rawlog, its external image folder and its ground truth. */
   std::vector<JobPath> inputs() const override;
 

@@ -3,6 +3,7 @@
  * A TUM RGB-D dataset folder (rgb.txt, depth.txt, optional groundtruth.txt) as a FrameSource. */
 #include <mrpt/img/TCamera.h>
 
+#include <algorithm>
 #include <vector>
 
 #include "rgbd_core/Params.h"
@@ -47,6 +48,9 @@ class TumSource : public FrameSource {
 
   const mrpt::img::TCamera& camera() const { return m_camera; }
   std::size_t size() const { return m_pairs.size(); }
+  std::size_t frameCount(std::size_t at_most = 0) const override {
+    return at_most > 0 ? std::min(at_most, size()) : size();
+  }
   std::size_t unmatchedColour() const { return m_unmatched_rgb; }
 
  private:

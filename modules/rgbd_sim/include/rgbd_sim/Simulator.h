@@ -7,6 +7,7 @@
 
 #include "rgbd_core/JobPaths.h"
 #include "rgbd_core/Params.h"
+#include "rgbd_core/Progress.h"
 #include "rgbd_core/Trajectory.h"
 #include "rgbd_io/RawlogWriter.h"
 #include "rgbd_sim/Render.h"
@@ -66,7 +67,9 @@ std::vector<JobPath> writtenFiles(const SimOutputs& outputs);
 
 /** Renders and writes the sequence. Throws for bad parameters or unwritable outputs. Every file
  * is written in full or not at all (OutputFile.h); the rawlog's, the lists' and the ground
- * truth's names appear only once the whole sequence is written. */
-SimResult simulate(const SimParams& params, const SimOutputs& outputs);
+ * truth's names appear only once the whole sequence is written. `progress` (optional) is updated
+ * after each frame; the caller finishes it. */
+SimResult simulate(const SimParams& params, const SimOutputs& outputs,
+                   Progress* progress = nullptr);
 
 }  // namespace hrgbd::sim
