@@ -112,13 +112,13 @@ TumSource::TumSource(const std::string& folder, const TumSourceParams& params)
     if (m_camera_name.empty()) {
       m_camera_name = "ros_default";
       m_camera_origin = " (guessed: the folder name names no Freiburg camera)";
-      warnOnce(folder,
-               "warning: TUM folder '" + folder +
-                   "': its path names no Freiburg camera (freiburg1/2/3 or fr1/2/3), so the "
-                   "intrinsics are ros_default (fx = fy = 525, cx = 319.5, cy = 239.5 at "
-                   "640x480); if they are not this camera's, set [TumSource] intrinsics = "
-                   "fr1|fr2|fr3|ros_default, or explicit with fx, fy, cx, cy, in an INI file "
-                   "given with --config");
+      // Said when the first frame is read: a run refused for its options prints its error alone.
+      m_intrinsics_warning =
+          "warning: TUM folder '" + folder +
+          "': its path names no Freiburg camera (freiburg1/2/3 or fr1/2/3), so the intrinsics "
+          "are ros_default (fx = fy = 525, cx = 319.5, cy = 239.5 at 640x480); if they are not "
+          "this camera's, set [TumSource] intrinsics = fr1|fr2|fr3|ros_default, or explicit with "
+          "fx, fy, cx, cy, in an INI file given with --config";
     } else {
       m_camera_origin = " (chosen by the folder name; [TumSource] intrinsics sets them)";
     }
@@ -149,6 +149,8 @@ TumSource::TumSource(const std::string& folder, const TumSourceParams& params)
 
 mrpt::obs::CObservation3DRangeScan::Ptr TumSource::next() {
   if (m_next >= m_pairs.size()) return nullptr;
+  if (!m_intrinsics_warning.empty()) warnOnce(m_folder, m_intrinsics_warning);
+  m_intrinsics_warning.clear();
   const auto& p = m_pairs[m_next++];
   const auto rgb_path = imagePath(p.rgb.file);
   const auto depth_path = imagePath(p.depth.file);

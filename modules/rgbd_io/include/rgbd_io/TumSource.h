@@ -60,9 +60,10 @@ class TumSource : public FrameSource {
   TumSourceParams m_params;
   mrpt::img::TCamera m_camera;
   std::string m_camera_name;
-  std::string m_camera_origin;  //!< how "auto" chose the intrinsics, for describe()
-  cv::Size m_first_size;        //!< size of the first frame read
-  std::string m_first_file;     //!< its colour image
+  std::string m_camera_origin;       //!< how "auto" chose the intrinsics, for describe()
+  std::string m_intrinsics_warning;  //!< printed once, when the first frame is read
+  cv::Size m_first_size;             //!< size of the first frame read
+  std::string m_first_file;          //!< its colour image
   std::vector<TumPair> m_pairs;
   std::size_t m_next = 0, m_unmatched_rgb = 0;
   Trajectory m_ground_truth;
