@@ -13,10 +13,11 @@ int main(int argc, char** argv) {
                                false, 1.0, cmd.atLeast(0.0, "R"), cmd);
   TCLAP::ValueArg<std::string> prefix("", "save-prefix", "[s] saves PREFIXmap.ply etc.", false,
                                       "live_", "PREFIX", cmd);
+  // Without --hold the window stays until it is closed or [q] (hold_seconds < 0 inside).
   TCLAP::ValueArg<double> hold("", "hold",
-                               "close S seconds after the data ends and save; negative (default) "
-                               "= keep the window until it is closed or [q]",
-                               false, -1, cmd.finite("S"), cmd);
+                               "close S (>= 0) seconds after the data ends and save; without it "
+                               "the window stays until it is closed or [q]",
+                               false, -1, cmd.atLeast(0.0, "S"), cmd);
   TCLAP::SwitchArg slam("", "slam", "SLAM mode: loop closures, the map snaps to optimised poses",
                         cmd);
   TCLAP::ValueArg<int> frames("n", "max-frames", "stop after N frames (0 = all)", false, 0,

@@ -186,8 +186,8 @@ TEST(LiveCli, RefusedCommandLinesOpenNoSensorAndSaveNothing) {
   // Without the checks these would open the OpenNI2 sensor (exit 1 when there is none).
   const fs::path dir = hrgbd::test::tempDir("cli_live");
   const auto base = "--save-prefix " + (dir / "live_").string() + " ";
-  for (const std::string bad :
-       {"-n -1", "-n abc", "--rate -1", "--rate nan", "--hold nan", "--hold inf", "--hold ''"})
+  for (const std::string bad : {"-n -1", "-n abc", "--rate -1", "--rate nan", "--hold nan",
+                                "--hold inf", "--hold ''", "--hold -5"})
     expectRefused("rgbd-live", base + bad);
   EXPECT_TRUE(fs::is_empty(dir));
 }

@@ -8,6 +8,8 @@
 #include <opencv2/core/utility.hpp>
 
 #include "rgbd_baselines/ThreadLimit.h"
+#include "rgbd_core/Intrinsics.h"
+#include "rgbd_core/RgbdFrame.h"
 #include "rgbd_io/RawlogSource.h"
 #include "rgbd_odometry/RgbdOdometry.h"
 
@@ -99,4 +101,29 @@ TEST(Baselines, ThreadLimitHoldsOpenCvAndOpenMpAndRestoresThem) {
   EXPECT_EQ(cv::getNumThreads(), cv_before);
   EXPECT_EQ(omp_get_max_threads(), 3);
   omp_set_num_threads(omp_before);
+}
+
+TEST(Baselines, DensePeersFlagFramesOfPureNoise) {
+  // OpenCV's ICP "converged" on two frames of random colour and depth and the frame was "ok";
+  // the depth agreement check flags it. The real frames above still register.
+  cv::RNG rng(7);
+  auto noise = [&](double t) {
+    cv::Mat bgr(480, 640, CV_8UC3), depth(480, 640, CV_16UC1);
+    rng.fill(bgr, cv::RNG::UNIFORM, 0, 256);
+    rng.fill(depth, cv::RNG::UNIFORM, 2500, 20000);  // 0.5 to 4 m at 5000 units per metre
+    return hrgbd::makeRgbdObservation(bgr, depth, 1.0 / 5000,
+                                      hrgbd::pinholeCamera(525, 525, 319.5, 239.5), t);
+  };
+  const auto a = noise(1.0), b = noise(1.1);
+  for (const auto m :
+       {hrgbd::Method::OpencvIcp, hrgbd::Method::OpencvRgbd, hrgbd::Method::OpencvRgbdIcp,
+        hrgbd::Method::Open3dColor, hrgbd::Method::Open3dHybrid}) {
+    hrgbd::OdometryParams p;
+    p.method = m;
+    hrgbd::RgbdOdometry odo(p, hrgbd::makeAnyRegistration(p, hrgbd::BaselineParams()));
+    odo.processObservation(*a);
+    const auto r = odo.processObservation(*b);
+    EXPECT_NE(r.status, hrgbd::FrameResult::Status::Ok) << toString(m) << ": " << r.detail;
+    EXPECT_NE(r.detail.find(toString(m)), std::string::npos) << r.detail;
+  }
 }

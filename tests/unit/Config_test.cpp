@@ -2,6 +2,7 @@
 
 #include <mrpt/config/CConfigFileMemory.h>
 
+#include <fstream>
 #include <stdexcept>
 
 #include "TestData.h"
@@ -201,4 +202,41 @@ TEST(Config, UnknownSectionIsRejectedAndSimulatorIsKnown) {
 
 TEST(Config, MissingFileIsAnError) {
   EXPECT_THROW(hrgbd::loadIniFile("/nonexistent/config.ini"), ConfigError);
+}
+
+TEST(Config, AFolderGivenAsTheConfigFileIsNamed) {
+  // It was "basic_string::_M_create": an ifstream opens a folder and reads garbage sizes.
+  const auto dir = hrgbd::test::tempDir("config_folder");
+  try {
+    hrgbd::loadIniFile(dir);
+    FAIL() << "a folder loaded as a config file";
+  } catch (const ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("'" + dir + "' is a folder"), std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(Config, RepeatedSectionsAndKeysAreRejectedNamingLineAndKey) {
+  const auto dir = hrgbd::test::tempDir("config_repeated");
+  const auto messageOfFile = [&](const std::string& text) {
+    std::ofstream(dir + "/c.ini") << text;
+    try {
+      hrgbd::loadIniFile(dir + "/c.ini");
+    } catch (const ConfigError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  auto msg = messageOfFile("[ORB]\nn_features = 500\nfast_threshold = 20\nn_features = 800\n");
+  EXPECT_NE(msg.find("line 4"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("[ORB] n_features"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("first on line 2"), std::string::npos) << msg;
+  msg = messageOfFile("[ORB]\nn_features = 500\n\n[Map]\nvoxel_size = 0.02\n[ORB]\nn_levels = 8\n");
+  EXPECT_NE(msg.find("line 6"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("section [ORB]"), std::string::npos) << msg;
+  // The same key in two sections, and commented-out repeats, are fine.
+  EXPECT_EQ(messageOfFile("[ORB]\nmax_depth = 4\n# max_depth = 5\n[Map]\nmax_depth = 4\n"), "");
+  // The project's own files repeat nothing.
+  for (const auto* f : {"/config.ini", "/config/paper.ini"})
+    EXPECT_NO_THROW(hrgbd::loadIniFile(std::string(HRGBD_SOURCE_DIR) + f)) << f;
 }

@@ -202,3 +202,27 @@ TEST(RawlogWriter, TheRawlogAppearsOnlyWhenClosedAndWriteFailuresAreErrors) {
         << e.what();
   }
 }
+
+TEST(RawlogSource, ASizeChangeWithinTheRawlogNamesTheEntry) {
+  const auto dir = hrgbd::test::tempDir("rawlog_size_change");
+  const auto path = dir + "/sizes.rawlog";
+  {
+    hrgbd::RawlogWriter w(path, hrgbd::ImageStorage::Inline);
+    w.write(*frame(1.0, 5000));
+    cv::Mat depth(240, 320, CV_16UC1, cv::Scalar(5000)), bgr(240, 320, CV_8UC3);
+    auto cam = hrgbd::intrinsicsPreset("fr1");
+    cam.scaleToResolution(320, 240);
+    w.write(*hrgbd::makeRgbdObservation(bgr, depth, 1.0 / 5000, cam, 2.0));
+    w.close();
+  }
+  hrgbd::RawlogSource src(path);
+  ASSERT_NE(src.next(), nullptr);
+  try {
+    src.next();
+    FAIL() << "a 320x240 frame after a 640x480 one was read";
+  } catch (const std::runtime_error& e) {
+    const std::string msg = e.what();
+    for (const auto* part : {"entry 1", "320x240", "entry 0", "640x480"})
+      EXPECT_NE(msg.find(part), std::string::npos) << part << ": " << msg;
+  }
+}

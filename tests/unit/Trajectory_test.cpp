@@ -103,3 +103,19 @@ TEST(Trajectory, RepeatedTimeStampsAreAnErrorWhenAsked) {
         << e.what();
   }
 }
+
+TEST(Trajectory, AByteOrderMarkAtTheStartIsSkippedAndAFolderIsNamed) {
+  const auto dir = hrgbd::test::tempDir("traj_bom");
+  std::ofstream(dir + "/t.txt") << "\xEF\xBB\xBF"
+                                   "1 0 0 0 0 0 0 1\n2 1 0 0 0 0 0 1\n";
+  const auto t = hrgbd::loadTumTrajectory(dir + "/t.txt");
+  ASSERT_EQ(t.size(), 2u);
+  EXPECT_DOUBLE_EQ(t[0].t, 1.0);
+  EXPECT_DOUBLE_EQ(t[1].pose.x(), 1.0);
+  try {
+    hrgbd::loadTumTrajectory(dir);
+    FAIL() << "a folder read as an empty trajectory";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("is a folder"), std::string::npos) << e.what();
+  }
+}

@@ -1,5 +1,7 @@
 #include "rgbd_io/TumLists.h"
 
+#include <filesystem>
+#include <fstream>
 #include <utility>
 #include <vector>
 
@@ -62,4 +64,27 @@ TEST(TumLists, AssociationPairsNearestWithinLimit) {
   EXPECT_EQ(p[0].depth.file, "d1");
   EXPECT_EQ(p[1].depth.file, "d2");
   EXPECT_EQ(p[2].depth.file, "d3");
+}
+
+TEST(TumLists, AByteOrderMarkAtTheStartIsSkipped) {
+  // Windows editors save "EF BB BF" first; it was read as part of the first time stamp.
+  const auto dir = hrgbd::test::tempDir("tum_bom");
+  std::ofstream(dir + "/rgb.txt") << "\xEF\xBB\xBF"
+                                     "1.0 rgb/1.png\n1.5 rgb/2.png\n";
+  const auto v = hrgbd::parseTumList(dir + "/rgb.txt");
+  ASSERT_EQ(v.size(), 2u);
+  EXPECT_DOUBLE_EQ(v[0].t, 1.0);
+  EXPECT_EQ(v[0].file, "rgb/1.png");
+  EXPECT_EQ(hrgbd::parseTumListText("\xEF\xBB\xBF# comment\n2.0 a.png\n", "rgb.txt").size(), 1u);
+}
+
+TEST(TumLists, AFolderInPlaceOfAListIsNamed) {
+  const auto dir = hrgbd::test::tempDir("tum_list_folder");
+  std::filesystem::create_directories(dir + "/rgb.txt");
+  try {
+    hrgbd::parseTumList(dir + "/rgb.txt");
+    FAIL() << "a folder read as an empty list";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("rgb.txt' is a folder"), std::string::npos) << e.what();
+  }
 }

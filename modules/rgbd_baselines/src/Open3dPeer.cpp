@@ -62,6 +62,13 @@ class Open3dPeer : public Registration {
       return r;
     }
     r.T.matrix() = T;
+    // Open3D reports success on frames of pure noise: its estimate must also make the depths
+    // agree.
+    if (r.detail = checkDepthAgreement(cur.image, ref.image, r.T); !r.detail.empty()) {
+      r.status = FrameResult::Status::LargeResiduals;
+      r.detail = toString(m_method) + ": " + r.detail;
+      return r;
+    }
     r.status = FrameResult::Status::Ok;
     return r;
   }

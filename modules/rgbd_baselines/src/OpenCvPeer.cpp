@@ -45,6 +45,13 @@ class OpenCvPeer : public Registration {
       return r;
     }
     cv::cv2eigen(Rt, r.T.matrix());
+    // OpenCV reports success on frames of pure noise: its estimate must also make the depths
+    // agree.
+    if (r.detail = checkDepthAgreement(cur.image, ref.image, r.T); !r.detail.empty()) {
+      r.status = FrameResult::Status::LargeResiduals;
+      r.detail = toString(m_method) + ": " + r.detail;
+      return r;
+    }
     r.status = FrameResult::Status::Ok;
     return r;
   }

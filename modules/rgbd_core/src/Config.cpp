@@ -4,10 +4,11 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
+#include <map>
 #include <sstream>
 
 #include "rgbd_core/ErrorText.h"
+#include "rgbd_core/TextFile.h"
 
 namespace hrgbd {
 
@@ -37,8 +38,47 @@ std::string resolvePath(const std::string& base, const std::string& path) {
   return (std::filesystem::path(base) / path).lexically_normal().string();
 }
 
+void rejectRepeatedEntries(const std::string& text, const std::string& name) {
+  // MRPT merges a repeated section and keeps one of two values of a key without a word; these
+  // are nearly always editing mistakes (a pasted block), so they are refused.
+  std::map<std::string, int> sections;                      // section -> line
+  std::map<std::pair<std::string, std::string>, int> keys;  // (section, key) -> line
+  std::string section;
+  std::istringstream in(text);
+  std::string line;
+  for (int line_no = 1; std::getline(in, line); ++line_no) {
+    const auto first = line.find_first_not_of(" \t\r");
+    if (first == std::string::npos) continue;
+    line = line.substr(first, line.find_last_not_of(" \t\r") + 1 - first);
+    if (line[0] == ';' || line[0] == '#' || line.rfind("//", 0) == 0 || line[0] == '@') continue;
+    const auto where = "config file '" + name + "' line " + std::to_string(line_no) + ": ";
+    if (line[0] == '[' && line.find(']') != std::string::npos) {
+      section = line.substr(1, line.find(']') - 1);
+      const auto [it, fresh] = sections.emplace(section, line_no);
+      if (!fresh)
+        throw ConfigError(where + "section [" + section + "] appears again (first on line " +
+                          std::to_string(it->second) + "); give each section once");
+      continue;
+    }
+    const auto eq = line.find('=');
+    if (eq == std::string::npos) continue;
+    auto key = line.substr(0, eq);
+    key.erase(key.find_last_not_of(" \t") + 1);
+    const auto [it, fresh] = keys.emplace(std::make_pair(section, key), line_no);
+    if (!fresh)
+      throw ConfigError(where + "[" + section + "] " + key + " is given again (first on line " +
+                        std::to_string(it->second) + "); give each key once per section");
+  }
+}
+
 std::unique_ptr<mrpt::config::CConfigFileBase> loadIniFile(const std::string& path) {
-  if (!std::ifstream(path).good()) throw ConfigError("cannot read config file '" + path + "'");
+  std::string text;
+  try {
+    text = readTextFile(path, "config file");
+  } catch (const std::runtime_error& e) {
+    throw ConfigError(e.what());
+  }
+  rejectRepeatedEntries(text, path);
   try {
     return std::make_unique<mrpt::config::CConfigFile>(path);
   } catch (const std::exception& e) {  // MRPT's preprocessor: $env{}, $eval{}, @include, ...

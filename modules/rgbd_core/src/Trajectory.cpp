@@ -5,20 +5,19 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <iomanip>
 #include <map>
 #include <sstream>
 #include <stdexcept>
 
 #include "rgbd_core/OutputFile.h"
+#include "rgbd_core/TextFile.h"
 #include "rgbd_core/Timestamp.h"
 
 namespace hrgbd {
 
 Trajectory loadTumTrajectory(const std::string& path, bool unique_times) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error("cannot open trajectory file '" + path + "'");
+  std::istringstream in(readTextFile(path, "trajectory file"));
   Trajectory traj;
   std::map<double, int> lines;  // time stamp -> line, with unique_times
   std::string line;

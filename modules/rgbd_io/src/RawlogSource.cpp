@@ -26,6 +26,12 @@ void normaliseFlags(mrpt::obs::CObservation3DRangeScan& o) {
   }
 }
 
+std::uintmax_t fileSize(const std::string& path) {
+  std::error_code ec;
+  const auto n = std::filesystem::file_size(path, ec);
+  return ec ? 0 : n;
+}
+
 }  // namespace
 
 std::string groundTruthPathFor(const std::string& rawlog_path) {
@@ -44,6 +50,9 @@ RawlogSource::RawlogSource(const std::string& path) : m_path(path) {
   const auto own = std::filesystem::path(path).replace_extension().string() + "_Images";
   m_images_dir =
       std::filesystem::is_directory(own) ? own : mrpt::obs::CRawlog::detectImagesDirectory(path);
+  // When neither exists, MRPT's guess can be a path nobody wrote ("/tmpImages" for "/tmp/x"):
+  // the messages name the folder a rawlog's images belong in.
+  if (!std::filesystem::is_directory(m_images_dir)) m_images_dir = own;
   const auto gt = groundTruthPathFor(path);
   if (mrpt::system::fileExists(gt)) m_ground_truth = loadTumTrajectory(gt);
 }
@@ -57,12 +66,22 @@ mrpt::obs::CObservation3DRangeScan::Ptr RawlogSource::next() {
       const ReadingRawlogEntry reading;
       obj = m_archive->ReadObject();
     } catch (const mrpt::serialization::CExceptionEOF&) {
-      // A clean end leaves no byte of a partial object behind.
-      if (m_file.getPosition() == start) return nullptr;
+      // A clean end leaves no byte of a partial object behind. Garbage with a gzip header
+      // decodes to nothing at all: an end before the first entry of a non-empty file.
+      if (m_file.getPosition() == start && (m_entry > 0 || fileSize(m_path) == 0)) return nullptr;
+      if (m_entry == 0)
+        throw std::runtime_error("rawlog '" + m_path +
+                                 "' could not be decoded: it is not an MRPT rawlog (plain or "
+                                 "gzip-compressed)");
       throw std::runtime_error("rawlog '" + m_path + "' is truncated inside entry " +
                                std::to_string(m_entry) + " (at byte " + std::to_string(start) +
                                " of the uncompressed stream)");
     } catch (const std::exception& e) {
+      if (m_entry == 0)
+        throw std::runtime_error("rawlog '" + m_path +
+                                 "' could not be decoded: it is not an MRPT rawlog (plain or "
+                                 "gzip-compressed), or is corrupt at entry 0: " +
+                                 errorText(e));
       throw std::runtime_error("rawlog '" + m_path + "' is corrupt at entry " +
                                std::to_string(m_entry) + ": " + errorText(e));
     }
@@ -92,6 +111,12 @@ mrpt::obs::CObservation3DRangeScan::Ptr RawlogSource::next() {
   if (obs->hasIntensityImage && obs->intensityImage.isExternallyStored()) {
     mrpt::img::CImage::setImagesPathBase(m_images_dir);
     const auto file = obs->intensityImage.getExternalStorageFileAbsolutePath();
+    const auto folder = std::filesystem::path(file).parent_path().string();
+    if (!std::filesystem::is_directory(folder))
+      throw std::runtime_error("rawlog '" + m_path + "' references external images in folder '" +
+                               folder + "', which does not exist (entry " +
+                               std::to_string(m_entry - 1) + ", image '" +
+                               obs->intensityImage.getExternalStorageFile() + "')");
     if (!mrpt::system::fileExists(file))
       throw std::runtime_error("rawlog '" + m_path + "' entry " + std::to_string(m_entry - 1) +
                                ": external image '" + file + "' is missing");
@@ -102,8 +127,29 @@ mrpt::obs::CObservation3DRangeScan::Ptr RawlogSource::next() {
     throw std::runtime_error("rawlog '" + m_path + "' entry " + std::to_string(m_entry - 1) +
                              ": cannot load external data: " + errorText(e));
   }
+  checkSize(*obs);
   ++m_stats.frames;
   return obs;
+}
+
+void RawlogSource::checkSize(const mrpt::obs::CObservation3DRangeScan& obs) {
+  // An image that disagrees with its own intrinsics is the odometry's to flag (BadInput); a
+  // sequence whose frames change size cannot be registered frame to frame at all.
+  cv::Size size;
+  if (obs.hasRangeImage)
+    size = {int(obs.rangeImage.cols()), int(obs.rangeImage.rows())};
+  else if (obs.hasIntensityImage)
+    size = {int(obs.intensityImage.getWidth()), int(obs.intensityImage.getHeight())};
+  auto text = [](cv::Size s) { return std::to_string(s.width) + "x" + std::to_string(s.height); };
+  if (m_first_size.empty()) {
+    m_first_size = size;
+    m_first_entry = m_entry - 1;
+  } else if (!size.empty() && size != m_first_size) {
+    throw std::runtime_error("rawlog '" + m_path + "' entry " + std::to_string(m_entry - 1) +
+                             ": frame is " + text(size) + " but the first frame (entry " +
+                             std::to_string(m_first_entry) + ") is " + text(m_first_size) +
+                             "; all frames of a sequence must have one size");
+  }
 }
 
 std::vector<JobPath> RawlogSource::inputs() const {

@@ -1,10 +1,10 @@
 #include "rgbd_io/TumLists.h"
 
 #include <cmath>
-#include <fstream>
 #include <sstream>
 #include <stdexcept>
 
+#include "rgbd_core/TextFile.h"
 #include "rgbd_core/TimeAssociation.h"
 #include "rgbd_core/Timestamp.h"
 
@@ -12,7 +12,7 @@ namespace hrgbd {
 
 std::vector<TumListEntry> parseTumListText(const std::string& text, const std::string& name) {
   std::vector<TumListEntry> out;
-  std::istringstream in(text);
+  std::istringstream in(std::string(withoutBom(text)));
   std::string line;
   for (int line_no = 1; std::getline(in, line); ++line_no) {
     const auto first = line.find_first_not_of(" \t\r");
@@ -41,11 +41,7 @@ std::vector<TumListEntry> parseTumListText(const std::string& text, const std::s
 }
 
 std::vector<TumListEntry> parseTumList(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error("cannot open TUM list '" + path + "'");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return parseTumListText(ss.str(), path);
+  return parseTumListText(readTextFile(path, "TUM list"), path);
 }
 
 std::vector<TumPair> associateTumLists(const std::vector<TumListEntry>& rgb,

@@ -4,8 +4,14 @@
 #include <mrpt/system/filesystem.h>
 
 #include <algorithm>
+#include <cstdint>
+#include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <mutex>
 #include <opencv2/imgcodecs.hpp>
+#include <set>
 #include <stdexcept>
 
 #include "rgbd_core/Config.h"
@@ -13,11 +19,84 @@
 #include "rgbd_core/RgbdFrame.h"
 
 namespace hrgbd {
+namespace {
+
+// The largest frame read [pixels], above any RGB-D sensor's (4096x3072 colour at most): a
+// larger size declared in an image header is a corrupt or hostile file ("decompression bomb"),
+// refused before the decoder allocates it.
+constexpr std::int64_t kMaxPixels = std::int64_t(4096) * 4096;
+
+std::string sizeText(cv::Size s) {
+  return std::to_string(s.width) + "x" + std::to_string(s.height);
+}
+
+// Refuses a PNG whose header (IHDR, which the format puts first) declares more pixels than a
+// frame may have. By hand: OpenCV 4.6 has no call that reads an image's size without decoding.
+void refuseHugePng(const std::string& path) {
+  unsigned char h[24] = {};
+  std::ifstream in(path, std::ios::binary);
+  if (!in.read(reinterpret_cast<char*>(h), sizeof h)) return;
+  if (std::memcmp(h, "\x89PNG\r\n\x1a\n", 8) != 0 || std::memcmp(h + 12, "IHDR", 4) != 0) return;
+  auto be32 = [](const unsigned char* b) {
+    return std::int64_t(b[0]) << 24 | std::int64_t(b[1]) << 16 | std::int64_t(b[2]) << 8 | b[3];
+  };
+  const std::int64_t w = be32(h + 16), ht = be32(h + 20);
+  if (w > kMaxPixels || ht > kMaxPixels || w * ht > kMaxPixels)  // in this order: no overflow
+    throw std::runtime_error("image '" + path + "' declares " + std::to_string(w) + "x" +
+                             std::to_string(ht) + " pixels, more than the " +
+                             std::to_string(kMaxPixels) + " accepted for one frame");
+}
+
+cv::Mat readImage(const std::string& path, const char* what, int flags) {
+  refuseHugePng(path);
+  cv::Mat m;
+  try {
+    m = cv::imread(path, flags);
+  } catch (const cv::Exception& e) {  // e.g. a JPEG declaring more pixels than OpenCV allows
+    throw std::runtime_error(std::string("cannot read ") + what + " image '" + path +
+                             "': " + e.err);
+  }
+  if (m.empty())
+    throw std::runtime_error(std::string("cannot read ") + what + " image '" + path + "'");
+  if (std::int64_t(m.cols) * m.rows > kMaxPixels)
+    throw std::runtime_error(std::string(what) + " image '" + path + "' is " + sizeText(m.size()) +
+                             ", more than the " + std::to_string(kMaxPixels) +
+                             " pixels accepted for one frame");
+  return m;
+}
+
+// Depth must be what TUM writes: one channel of 16-bit values (value / depth_factor = metres).
+// Anything else is refused rather than converted: OpenCV would turn a colour PNG into grey
+// levels and an 8-bit one into small depths, both read as plausible but wrong metres.
+void requireDepthFormat(const cv::Mat& depth, const std::string& path) {
+  if (depth.type() == CV_16UC1) return;
+  const int bits = depth.depth() == CV_8U || depth.depth() == CV_8S     ? 8
+                   : depth.depth() == CV_16U || depth.depth() == CV_16S ? 16
+                   : depth.depth() == CV_64F                            ? 64
+                                                                        : 32;
+  const bool real = depth.depth() == CV_32F || depth.depth() == CV_64F;
+  throw std::runtime_error(
+      "depth image '" + path + "' is " + std::to_string(depth.channels()) + "-channel " +
+      std::to_string(bits) + "-bit" + (real ? " floating point" : "") +
+      "; depth must be a single-channel 16-bit image (value / [TumSource] depth_factor = metres)");
+}
+
+// Says `text` on stderr once per folder and process (a benchmark opens a folder per method).
+void warnOnce(const std::string& folder, const std::string& text) {
+  static std::mutex mutex;
+  static std::set<std::string> warned;
+  const std::lock_guard<std::mutex> lock(mutex);
+  if (warned.insert(mrpt::system::toAbsolutePath(folder)).second) std::cerr << text << std::endl;
+}
+
+}  // namespace
 
 TumSource::TumSource(const std::string& folder, const TumSourceParams& params)
     : m_folder(folder), m_params(params) {
   if (!mrpt::system::directoryExists(folder))
-    throw std::runtime_error("TUM folder '" + folder + "' does not exist");
+    throw std::runtime_error(
+        "TUM folder '" + folder + "' " +
+        (mrpt::system::fileExists(folder) ? "is a file, not a folder" : "does not exist"));
   const auto rgb = parseTumList(folder + "/rgb.txt");
   const auto depth = parseTumList(folder + "/depth.txt");
   if (rgb.empty()) throw std::runtime_error("'" + folder + "/rgb.txt' lists no images");
@@ -30,10 +109,25 @@ TumSource::TumSource(const std::string& folder, const TumSourceParams& params)
   m_camera_name = params.intrinsics;
   if (m_camera_name == "auto") {
     m_camera_name = guessTumPreset(mrpt::system::toAbsolutePath(folder));
-    if (m_camera_name.empty()) m_camera_name = "ros_default";
+    if (m_camera_name.empty()) {
+      m_camera_name = "ros_default";
+      m_camera_origin = " (guessed: the folder name names no Freiburg camera)";
+      // Said when the first frame is read: a run refused for its options prints its error alone.
+      m_intrinsics_warning =
+          "warning: TUM folder '" + folder +
+          "': its path names no Freiburg camera (freiburg1/2/3 or fr1/2/3), so the intrinsics "
+          "are ros_default (fx = fy = 525, cx = 319.5, cy = 239.5 at 640x480); if they are not "
+          "this camera's, set [TumSource] intrinsics = fr1|fr2|fr3|ros_default, or explicit with "
+          "fx, fy, cx, cy, in an INI file given with --config";
+    } else {
+      m_camera_origin = " (chosen by the folder name; [TumSource] intrinsics sets them)";
+    }
   }
-  m_camera = m_camera_name == "explicit" ? pinholeCamera(params.fx, params.fy, params.cx, params.cy)
-                                         : intrinsicsPreset(m_camera_name);
+  // Explicit intrinsics are in pixels of the folder's own images: their size is the first
+  // frame's (0 x 0 until it is read).
+  m_camera = m_camera_name == "explicit"
+                 ? pinholeCamera(params.fx, params.fy, params.cx, params.cy, 0, 0)
+                 : intrinsicsPreset(m_camera_name);
 
   const auto gt = folder + "/groundtruth.txt";
   if (mrpt::system::fileExists(gt)) m_ground_truth = loadTumTrajectory(gt);
@@ -50,33 +144,67 @@ TumSource::TumSource(const std::string& folder, const TumSourceParams& params)
   }
   for (const auto* list : {&rgb, &depth})
     for (const auto& e : *list)
-      m_inputs.push_back({folder + "/" + e.file, "the TUM folder's image " + e.file});
+      m_inputs.push_back({imagePath(e.file), "the TUM folder's image " + e.file});
 }
 
 mrpt::obs::CObservation3DRangeScan::Ptr TumSource::next() {
   if (m_next >= m_pairs.size()) return nullptr;
+  if (!m_intrinsics_warning.empty()) warnOnce(m_folder, m_intrinsics_warning);
+  m_intrinsics_warning.clear();
   const auto& p = m_pairs[m_next++];
-  const auto rgb_path = m_folder + "/" + p.rgb.file;
-  const auto depth_path = m_folder + "/" + p.depth.file;
-  cv::Mat bgr = cv::imread(rgb_path, cv::IMREAD_COLOR);
-  if (bgr.empty()) throw std::runtime_error("cannot read colour image '" + rgb_path + "'");
-  cv::Mat depth = cv::imread(depth_path, cv::IMREAD_ANYDEPTH);
-  if (depth.empty()) throw std::runtime_error("cannot read depth image '" + depth_path + "'");
-  if (depth.type() != CV_16UC1)
-    throw std::runtime_error("depth image '" + depth_path + "' is not a 16-bit PNG");
+  const auto rgb_path = imagePath(p.rgb.file);
+  const auto depth_path = imagePath(p.depth.file);
+  const cv::Mat bgr = readImage(rgb_path, "colour", cv::IMREAD_COLOR);
+  const cv::Mat depth = readImage(depth_path, "depth", cv::IMREAD_UNCHANGED);
+  requireDepthFormat(depth, depth_path);
   if (bgr.size() != depth.size())
-    throw std::runtime_error("'" + rgb_path + "' and '" + depth_path + "' differ in size");
-  auto cam = m_camera;
-  if (depth.cols != static_cast<int>(cam.ncols) || depth.rows != static_cast<int>(cam.nrows))
-    cam.scaleToResolution(depth.cols, depth.rows);
+    throw std::runtime_error("'" + rgb_path + "' is " + sizeText(bgr.size()) + " but '" +
+                             depth_path + "' is " + sizeText(depth.size()) +
+                             "; colour and depth images must have one size");
+  if (m_first_size.empty()) {
+    m_first_size = depth.size();
+    m_first_file = rgb_path;
+  } else if (depth.size() != m_first_size) {
+    throw std::runtime_error("'" + rgb_path + "' (frame " + std::to_string(m_next - 1) + ") is " +
+                             sizeText(depth.size()) + " but the sequence's first frame '" +
+                             m_first_file + "' is " + sizeText(m_first_size) +
+                             "; all frames of a sequence must have one size");
+  }
   ++m_stats.frames;
-  return makeRgbdObservation(bgr, depth, 1.0 / m_params.depth_factor, cam, p.rgb.stamp);
+  return makeRgbdObservation(bgr, depth, 1.0 / m_params.depth_factor,
+                             cameraFor(depth.size(), rgb_path), p.rgb.stamp);
+}
+
+std::string TumSource::imagePath(const std::string& file) const {
+  // TUM lists name images relative to the folder; an absolute path is taken as it is.
+  return std::filesystem::path(file).is_absolute() ? file : m_folder + "/" + file;
+}
+
+mrpt::img::TCamera TumSource::cameraFor(cv::Size size, const std::string& file) const {
+  auto cam = m_camera;
+  if (cam.ncols == 0) {  // explicit: for the images as they are
+    cam.ncols = size.width;
+    cam.nrows = size.height;
+    return cam;
+  }
+  if (size.width == int(cam.ncols) && size.height == int(cam.nrows)) return cam;
+  // A preset is calibrated at 640x480; another size of that aspect ratio is the same sensor
+  // binned or upsampled (MRPT's scaleToResolution), any other aspect ratio is another camera.
+  if (std::int64_t(size.width) * cam.nrows != std::int64_t(size.height) * cam.ncols)
+    throw std::runtime_error(
+        "'" + file + "' is " + sizeText(size) + " but the intrinsics " + m_camera_name +
+        " are for " + std::to_string(cam.ncols) + "x" + std::to_string(cam.nrows) +
+        " images and cannot be scaled to another aspect ratio; give this camera's intrinsics: "
+        "[TumSource] intrinsics = explicit with fx, fy, cx, cy in pixels of these images");
+  cam.scaleToResolution(size.width, size.height);
+  return cam;
 }
 
 std::string TumSource::describe() const {
   return "TUM folder '" + m_folder + "': " + std::to_string(m_pairs.size()) + " frames (" +
          std::to_string(m_unmatched_rgb) + " colour images without depth), intrinsics " +
-         m_camera_name + ", " + std::to_string(m_ground_truth.size()) + " ground-truth poses";
+         m_camera_name + m_camera_origin + ", " + std::to_string(m_ground_truth.size()) +
+         " ground-truth poses";
 }
 
 }  // namespace hrgbd

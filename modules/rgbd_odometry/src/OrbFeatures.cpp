@@ -1,5 +1,6 @@
 #include "rgbd_odometry/OrbFeatures.h"
 
+#include <algorithm>
 #include <cmath>
 #include <opencv2/features2d.hpp>
 
@@ -12,8 +13,16 @@ void OrbParams::checkTogether(const std::string& s) const {
 }
 
 FeatureSet extractOrbFeatures(const RgbdImage& image, const OrbParams& p) {
-  auto orb = cv::ORB::create(p.n_features, static_cast<float>(p.scale_factor), p.n_levels, 31, 0, 2,
-                             cv::ORB::HARRIS_SCORE, 31, p.fast_threshold);
+  // ORB keeps no keypoint within its 31-pixel edge threshold of the border, so a smaller image
+  // has none; OpenCV's ORB pyramid throws an assertion on a 1-pixel image instead of saying so.
+  constexpr int kEdge = 31;
+  if (std::min(image.grey.cols, image.grey.rows) <= 2 * kEdge) {
+    FeatureSet none;
+    none.descriptors.create(0, 32, CV_8UC1);
+    return none;
+  }
+  auto orb = cv::ORB::create(p.n_features, static_cast<float>(p.scale_factor), p.n_levels, kEdge, 0,
+                             2, cv::ORB::HARRIS_SCORE, kEdge, p.fast_threshold);
   std::vector<cv::KeyPoint> kps;
   cv::Mat desc;
   orb->detectAndCompute(image.grey, cv::noArray(), kps, desc);

@@ -19,7 +19,7 @@ struct RansacParams : public Params<RansacParams> {
 
   template <class P, class V>
   static void declare(P& p, V& v) {
-    HRGBD_PARAM(iterations, "random 3-point hypotheses", Range::atLeast(1));
+    HRGBD_PARAM(iterations, "random 3-point hypotheses", Range::closed(1, 1000000));
     HRGBD_PARAM(inlier_threshold, "[m] inlier residual threshold", Range::above(0));
     HRGBD_PARAM(min_matches, "fewer matches: frame not registered", Range::atLeast(3));
     HRGBD_PARAM(min_inliers, "fewer inliers: frame not registered", Range::atLeast(3));

@@ -63,7 +63,12 @@ E parseEnum(const std::string& name, const std::string& section, const std::stri
   return v;
 }
 
-/** Loads an INI file, throwing ConfigError if it is missing or unreadable. */
+/** Throws ConfigError naming the file (`name`), line and section or key when INI `text` gives a
+ * section twice or a key twice in one section (MRPT would merge or pick one silently). */
+void rejectRepeatedEntries(const std::string& text, const std::string& name);
+
+/** Loads an INI file, throwing ConfigError if it is missing, a folder or unreadable, or if it
+ * repeats a section or key (rejectRepeatedEntries()). */
 std::unique_ptr<mrpt::config::CConfigFileBase> loadIniFile(const std::string& path);
 
 /** Every INI section any app of this project reads, so that one file can hold them all:

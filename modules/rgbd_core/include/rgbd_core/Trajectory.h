@@ -25,11 +25,12 @@ struct TimedPose {
 };
 using Trajectory = std::vector<TimedPose>;
 
-/** Reads a TUM trajectory file. Lines starting with '#' and blank lines are skipped. Throws
- * std::runtime_error naming the file and line for a malformed line, a non-finite value or a
- * zero quaternion, and, with `unique_times`, for a time stamp already given on an earlier line
- * (TUM ground truth may repeat one: the original fr2/desk file does). Quaternions are
- * normalised. Entries are returned in file order. */
+/** Reads a TUM trajectory file. Lines starting with '#', blank lines and a UTF-8 byte-order mark
+ * are skipped. Throws std::runtime_error naming the file and line for a malformed line, a
+ * non-finite value or a zero quaternion, naming the file when it is missing or a folder, and, with
+ * `unique_times`, for a time stamp already given on an earlier line (TUM ground truth may repeat
+ * one: the original fr2/desk file does). Quaternions are normalised. Entries are returned in file
+ * order. */
 Trajectory loadTumTrajectory(const std::string& path, bool unique_times = false);
 
 /** Writes one TUM line (`t tx ty tz qx qy qz qw`): t as formatSeconds() writes it (the shortest

@@ -7,6 +7,7 @@
 
 #include <deque>
 #include <memory>
+#include <opencv2/core.hpp>
 
 #include "rgbd_io/FrameSource.h"
 
@@ -17,10 +18,11 @@ std::string groundTruthPathFor(const std::string& rawlog_path);
 
 /** Reads CObservation3DRangeScan frames from a rawlog, one at a time. Objects of other types
  * (actions, other observations) are skipped and counted in stats().skipped_objects. Externally
- * stored images are
- * loaded on next() ("<stem>_Images/" or what MRPT detects). Clean end of file -> nullptr; a
- * truncated or corrupt file, or a frame whose time stamp is unset or outside [1970, 1e11 s)
- * (Timestamp.h) -> exception naming the file and entry. */
+ * stored images are loaded on next() ("<stem>_Images/" or what MRPT detects). Clean end of file
+ * -> nullptr; exception naming the file (and entry) for: a file that is no rawlog (garbage, also
+ * behind a gzip header), a truncated or corrupt file, a missing external image or image folder,
+ * a frame whose time stamp is unset or outside [1970, 1e11 s) (Timestamp.h), a frame whose size
+ * differs from the first frame's. */
 class RawlogSource : public FrameSource {
  public:
   explicit RawlogSource(const std::string& path);
@@ -41,6 +43,10 @@ class RawlogSource : public FrameSource {
   std::size_t m_entry = 0;
   std::string m_images_dir;
   Trajectory m_ground_truth;
+  cv::Size m_first_size;  //!< size of the first frame
+  std::size_t m_first_entry = 0;
+
+  void checkSize(const mrpt::obs::CObservation3DRangeScan& obs);
 };
 
 }  // namespace hrgbd

@@ -16,9 +16,9 @@ struct TumListEntry {
   int line = 0;                   //!< line number in the list file, for messages
 };
 
-/** Parses a TUM list. Comments ('#') and blank lines are skipped. Throws std::runtime_error
- * naming the file and line for a malformed line, a time stamp that is no frame time
- * (parseFrameTime(): negative, not below 1e11 s, finer than 100 ns, not a number), or one that
+/** Parses a TUM list. Comments ('#'), blank lines and a UTF-8 byte-order mark are skipped. Throws
+ * std::runtime_error naming the file and line for a malformed line, a time stamp that is no frame
+ * time (parseFrameTime(): negative, not below 1e11 s, finer than 100 ns, not a number), or one that
  * is not strictly greater than the previous one (duplicated or out-of-order stamps). */
 std::vector<TumListEntry> parseTumList(const std::string& path);
 

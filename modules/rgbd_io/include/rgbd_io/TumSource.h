@@ -4,6 +4,7 @@
 #include <mrpt/img/TCamera.h>
 
 #include <algorithm>
+#include <opencv2/core.hpp>
 #include <vector>
 
 #include "rgbd_core/Params.h"
@@ -16,8 +17,9 @@ namespace hrgbd {
 struct TumSourceParams : public Params<TumSourceParams> {
   double max_time_difference = 0.02;  //!< [s] colour/depth pairs further apart are not associated
   double depth_factor = 5000.0;       //!< [units per metre] depth PNG value / factor = metres
-  /** auto (from the folder name, else ros_default), fr1, fr2, fr3, ros_default, or explicit
-   * (use fx, fy, cx, cy below). */
+  /** auto (from the folder name, else ros_default with a warning on stderr), fr1, fr2, fr3,
+   * ros_default (presets for 640x480, scaled to other sizes of that aspect ratio), or explicit
+   * (fx, fy, cx, cy below, in pixels of the folder's images, any size). */
   std::string intrinsics = "auto";
   double fx = 525.0, fy = 525.0;  //!< [px] focal lengths, only with intrinsics = explicit
   double cx = 319.5, cy = 239.5;  //!< [px] principal point, only with intrinsics = explicit
@@ -38,7 +40,11 @@ struct TumSourceParams : public Params<TumSourceParams> {
 class TumSource : public FrameSource {
  public:
   /** Reads and associates the lists now; throws naming the file if anything is wrong. Frames carry
-   * their list time stamps exactly (Timestamp.h). */
+   * their list time stamps exactly (Timestamp.h). Image names in the lists are relative to the
+   * folder, or absolute. next() throws naming the image for: a missing or undecodable image, a
+   * depth image that is not single-channel 16-bit, colour and depth of different sizes, a size
+   * other than the first frame's, a size the preset intrinsics cannot be scaled to (another
+   * aspect ratio), and an image declaring more than 4096 x 4096 pixels. */
   TumSource(const std::string& folder, const TumSourceParams& params = {});
   mrpt::obs::CObservation3DRangeScan::Ptr next() override;
   Trajectory groundTruth() const override { return m_ground_truth; }
@@ -58,10 +64,17 @@ class TumSource : public FrameSource {
   TumSourceParams m_params;
   mrpt::img::TCamera m_camera;
   std::string m_camera_name;
+  std::string m_camera_origin;       //!< how "auto" chose the intrinsics, for describe()
+  std::string m_intrinsics_warning;  //!< printed once, when the first frame is read
+  cv::Size m_first_size;             //!< size of the first frame read
+  std::string m_first_file;          //!< its colour image
   std::vector<TumPair> m_pairs;
   std::size_t m_next = 0, m_unmatched_rgb = 0;
   Trajectory m_ground_truth;
   std::vector<JobPath> m_inputs;
+
+  std::string imagePath(const std::string& file) const;
+  mrpt::img::TCamera cameraFor(cv::Size size, const std::string& file) const;
 };
 
 }  // namespace hrgbd

@@ -30,7 +30,7 @@ struct MsseParams : public Params<MsseParams> {
 
   template <class P, class V>
   static void declare(P& p, V& v) {
-    HRGBD_PARAM(hypotheses, "random 3-point hypotheses", Range::atLeast(1));
+    HRGBD_PARAM(hypotheses, "random 3-point hypotheses", Range::closed(1, 1000000));
     HRGBD_PARAM(k_fraction, "k' / number of matches (least k'-th order residual)",
                 Range::openClosed(0, 1));
     HRGBD_PARAM(T, "MSSE threshold of eq. (4)", Range::above(0));

@@ -21,7 +21,7 @@ struct OrbParams : public Params<OrbParams> {
 
   template <class P, class V>
   static void declare(P& p, V& v) {
-    HRGBD_PARAM(n_features, "[count] most ORB keypoints per frame", Range::atLeast(10));
+    HRGBD_PARAM(n_features, "[count] most ORB keypoints per frame", Range::closed(10, 100000));
     HRGBD_PARAM(scale_factor, "pyramid decimation ratio", Range::openClosed(1, 2));
     HRGBD_PARAM(n_levels, "pyramid levels", Range::closed(1, 16));
     HRGBD_PARAM(fast_threshold, "[grey levels] FAST threshold", Range::closed(1, 255));
