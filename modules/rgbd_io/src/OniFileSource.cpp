@@ -14,6 +14,7 @@
 
 #include "rgbd_core/RgbdFrame.h"
 #include "rgbd_core/Timestamp.h"
+#include "rgbd_io/RawlogSource.h"
 
 namespace hrgbd {
 namespace {
@@ -59,6 +60,7 @@ struct OniFileSource::Impl {
   double depth_unit = 0.001;  // [m] per depth value
   double max_dt_us = 0;       // [us] pairing tolerance
   std::size_t unpaired = 0;
+  Trajectory ground_truth;
 
   void openStream(Stream& s, openni::SensorType type, const char* name) {
     if (!device.hasSensor(type)) throw fail(path, std::string("has no ") + name + " stream");
@@ -125,6 +127,8 @@ OniFileSource::OniFileSource(const std::string& path) : m(std::make_unique<Impl>
   if (probe.gcount() != 4 || std::memcmp(magic, "NI10", 4) != 0)
     throw fail(path, "not an ONI file (it does not start with \"NI10\")");
   probe.close();
+  const auto gt = groundTruthPathFor(path);
+  if (std::filesystem::exists(gt)) m->ground_truth = loadTumTrajectory(gt);
 
   if (openni::OpenNI::initialize() != openni::STATUS_OK)
     throw fail(path, "OpenNI2 cannot start: " + openniError());
@@ -228,8 +232,11 @@ std::string OniFileSource::describe() const {
          std::to_string(m->camera.fx()) + " px from the field of view)";
 }
 
+Trajectory OniFileSource::groundTruth() const { return m->ground_truth; }
+
 std::vector<JobPath> OniFileSource::inputs() const {
-  return {{m->path, "the input recording (--input)"}};
+  return {{m->path, "the input recording (--input)"},
+          {groundTruthPathFor(m->path), "the input recording's ground truth"}};
 }
 
 std::size_t OniFileSource::droppedFrames() const { return m->depth.dropped + m->colour.dropped; }

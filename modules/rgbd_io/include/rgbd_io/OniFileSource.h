@@ -27,6 +27,8 @@ namespace hrgbd {
  * - Time stamps: the colour frame's device time [us] as seconds (Timestamp.h), i.e. seconds
  *   since the device started, not UNIX time.
  * - Dropped frames: gaps in a stream's frame indices are counted (droppedFrames()).
+ * - Ground truth: "<dir>/<stem>_groundtruth.txt" beside the recording when it exists (TUM format,
+ *   in the recording's clock), as for rawlogs (rgbd-simulate --oni writes one).
  * Errors throw std::runtime_error naming the file: missing file, not an ONI file, a recording
  * OpenNI2 cannot open (truncated or corrupt), no depth or no colour stream, an unsupported pixel
  * format, and a recording that stops delivering frames before its recorded end. */
@@ -35,7 +37,9 @@ class OniFileSource : public FrameSource {
   explicit OniFileSource(const std::string& path);
   ~OniFileSource() override;
   mrpt::obs::CObservation3DRangeScan::Ptr next() override;
+  Trajectory groundTruth() const override;
   std::string describe() const override;
+  /** The recording and its ground truth file. */
   std::vector<JobPath> inputs() const override;
 
   /** [count] frames missing from the streams' frame indices (depth + colour). */

@@ -1,19 +1,22 @@
 #pragma once
 /** \file OniWriter.h
- * Test support: writes RGB-D frames as an OpenNI recording (.oni) that OpenNI2's own file driver
- * (libOniFile) plays. OpenNI2's Recorder needs an opened device and there is none here, so this
- * writes the format by hand, record by record as the Recorder does (file header, node-added,
- * property, state-ready, data-begin and new-data records, then per stream a node-removed record
- * and a seek table, the node-added records rewritten with the frame count and seek table
- * position, and the end record). Frames are stored uncompressed (codec "NONE"): depth as
- * DEPTH_1_MM (uint16 millimetres), colour as RGB888. */
+ * Writes RGB-D frames as an OpenNI recording (.oni) that OpenNI2's own file driver (libOniFile)
+ * plays (OniFileSource.h, or any OpenNI2 program), e.g. simulated sequences (rgbd-simulate
+ * --oni). OpenNI2's Recorder needs an opened device (a sensor), so this writes the format by hand,
+ * record by record as the Recorder does (file header, node-added, property, state-ready, data-begin
+ * and new-data records, then per stream a node-removed record and a seek table, the node-added
+ * records rewritten with the frame count and seek table position, and the end record). Frames are
+ * stored uncompressed (codec "NONE"): depth as DEPTH_1_MM (uint16 millimetres), colour as RGB888.
+ */
 #include <cstdint>
 #include <fstream>
 #include <opencv2/core.hpp>
 #include <string>
 #include <vector>
 
-namespace hrgbd::test {
+#include "rgbd_core/OutputFile.h"
+
+namespace hrgbd {
 
 /** One stream of the recording. */
 struct OniStreamSpec {
@@ -24,14 +27,19 @@ struct OniStreamSpec {
 
 class OniWriter {
  public:
-  /** Starts the file; either spec may be absent (width 0) to write a recording without it. */
+  /** Starts the file (an OutputFile: it appears under its name only when close() succeeds);
+   * either spec may be absent (width 0) to write a recording without that stream. Throws naming
+   * the file if it cannot be written. */
   OniWriter(const std::string& path, const OniStreamSpec& depth, const OniStreamSpec& colour);
+  /** Without close(): nothing is left under the recording's name. */
+  ~OniWriter();
   /** Appends one depth frame (CV_16UC1, millimetres) with the device time [us] and frame index
    * (1, 2, ...; increasing, gaps allowed: they stand for frames the device dropped). */
   void writeDepth(std::uint64_t timestamp_us, std::uint32_t frame_index, const cv::Mat& depth_mm);
   /** Appends one colour frame (CV_8UC3, BGR as OpenCV holds it; stored as RGB). */
   void writeColour(std::uint64_t timestamp_us, std::uint32_t frame_index, const cv::Mat& bgr);
-  /** Writes the seek tables, patches the node records and the header, and closes the file. */
+  /** Writes the seek tables, patches the node records and the header, closes the file and moves
+   * it into place; throws naming the file if a write failed. */
   void close();
 
  private:
@@ -58,10 +66,10 @@ class OniWriter {
   void intProperty(const Node& n, const char* name, std::uint64_t value);
   void generalProperty(const Node& n, const char* name, const void* data, std::uint32_t size);
 
-  std::string m_path;
+  OutputFile m_output;
   std::ofstream m_file;
   Node m_depth, m_colour;
   bool m_closed = false;
 };
 
-}  // namespace hrgbd::test
+}  // namespace hrgbd

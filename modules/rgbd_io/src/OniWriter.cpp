@@ -1,9 +1,9 @@
-#include "OniWriter.h"
+#include "rgbd_io/OniWriter.h"
 
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
 
-namespace hrgbd::test {
+namespace hrgbd {
 namespace {
 
 // Record types and constants of the ONI format (OpenNI2 Source/Core/OniDataRecords.h).
@@ -37,8 +37,9 @@ void putString(std::string& s, const std::string& text) {
 
 OniWriter::OniWriter(const std::string& path, const OniStreamSpec& depth,
                      const OniStreamSpec& colour)
-    : m_path(path), m_file(path, std::ios::binary | std::ios::trunc) {
-  if (!m_file) throw std::runtime_error("cannot write " + path);
+    : m_output(path, "OpenNI recording"),
+      m_file(m_output.writePath(), std::ios::binary | std::ios::trunc) {
+  if (!m_file) m_output.fail();
   std::string header = "NI10";
   put<std::uint8_t>(header, 1);  // version 1.0.1.0, as OpenNI2's Recorder writes
   put<std::uint8_t>(header, 0);
@@ -140,7 +141,7 @@ std::uint64_t OniWriter::record(std::uint32_t type, std::uint32_t node, std::uin
   m_file.write(fields.data(), static_cast<std::streamsize>(fields.size()));
   if (payload_size)
     m_file.write(static_cast<const char*>(payload), static_cast<std::streamsize>(payload_size));
-  if (!m_file) throw std::runtime_error("write failed: " + m_path);
+  if (!m_file) m_output.fail();
   return pos;
 }
 
@@ -209,7 +210,10 @@ void OniWriter::close() {
   put<std::uint32_t>(patch, m_colour.id ? m_colour.id : m_depth.id);
   m_file.write(patch.data(), static_cast<std::streamsize>(patch.size()));
   m_file.close();
-  if (!m_file) throw std::runtime_error("write failed: " + m_path);
+  if (!m_file) m_output.fail();
+  m_output.commit();
 }
 
-}  // namespace hrgbd::test
+OniWriter::~OniWriter() = default;
+
+}  // namespace hrgbd
