@@ -178,6 +178,41 @@ TEST(OniFileSource, BadFilesAreClearErrors) {
             std::string::npos);
   EXPECT_NE(errorOf(writeDesk("no_depth", false, true)).find("has no depth stream"),
             std::string::npos);
+
+  // Depth at another resolution than colour was not registered when recorded.
+  const auto unregistered = dir + "/unregistered.oni";
+  {
+    OniStreamSpec depth{320, 240}, colour{640, 480};
+    OniWriter w(unregistered, depth, colour);
+    w.writeDepth(0, 1, cv::Mat(240, 320, CV_16UC1, cv::Scalar(1000)));
+    w.writeColour(0, 1, cv::Mat(480, 640, CV_8UC3, cv::Scalar(1, 2, 3)));
+    w.close();
+  }
+  const auto e = errorOf(unregistered);
+  EXPECT_NE(e.find("depth (320x240) and colour (640x480) differ"), std::string::npos) << e;
+  EXPECT_NE(e.find("record with registration on"), std::string::npos) << e;
+}
+
+TEST(OniFileSource, SaysWhenDepthAndColourFieldsOfViewDiffer) {
+  const auto path = hrgbd::test::tempDir("oni_fov") + "/fov.oni";
+  {
+    OniStreamSpec depth{64, 48, 1.02, 0.80}, colour{64, 48, 1.09, 0.85};  // Kinect-like
+    OniWriter w(path, depth, colour);
+    for (std::uint32_t i = 1; i <= 3; ++i) {
+      w.writeDepth(i * 33333, i, cv::Mat(48, 64, CV_16UC1, cv::Scalar(1000)));
+      w.writeColour(i * 33333, i, cv::Mat(48, 64, CV_8UC3, cv::Scalar(1, 2, 3)));
+    }
+    w.close();
+  }
+  OniFileSource src(path);
+  EXPECT_NE(src.describe().find("field of view differs"), std::string::npos) << src.describe();
+  std::size_t n = 0;
+  while (src.next()) ++n;
+  EXPECT_EQ(n, 3u);
+  OniFileSource same(writeDesk("fov_same"));
+  EXPECT_NE(same.describe().find("depth taken as registered to colour when recorded"),
+            std::string::npos);
+  EXPECT_EQ(same.describe().find("differs"), std::string::npos) << same.describe();
 }
 
 TEST(OniFileSource, TruncatedOrCorruptRecordingsAreClearErrors) {

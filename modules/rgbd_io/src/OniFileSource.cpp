@@ -61,6 +61,7 @@ struct OniFileSource::Impl {
   double max_dt_us = 0;       // [us] pairing tolerance
   std::size_t unpaired = 0;
   Trajectory ground_truth;
+  std::string registration;  // how depth comes to be in the colour camera, for describe()
 
   void openStream(Stream& s, openni::SensorType type, const char* name) {
     if (!device.hasSensor(type)) throw fail(path, std::string("has no ") + name + " stream");
@@ -167,19 +168,29 @@ OniFileSource::OniFileSource(const std::string& path) : m(std::make_unique<Impl>
     if (m->device.setImageRegistrationMode(openni::IMAGE_REGISTRATION_DEPTH_TO_COLOR) !=
         openni::STATUS_OK)
       throw fail(path, "cannot switch on depth-to-colour registration: " + openniError());
+    m->registration = "depth registered to colour by the device";
   } else {
-    const auto close = [](double a, double b) { return std::abs(a - b) <= 0.01 * std::abs(b); };
-    if (dm.getResolutionX() != cm.getResolutionX() || dm.getResolutionY() != cm.getResolutionY() ||
-        !close(m->depth.stream.getHorizontalFieldOfView(), hfov) ||
-        !close(m->depth.stream.getVerticalFieldOfView(), vfov))
-      throw fail(path,
-                 "depth (" + std::to_string(dm.getResolutionX()) + "x" +
-                     std::to_string(dm.getResolutionY()) + ") is not registered to colour (" +
-                     std::to_string(cm.getResolutionX()) + "x" +
-                     std::to_string(cm.getResolutionY()) +
-                     ", or other fields of view), and OpenNI2's file driver cannot register it "
-                     "(IMAGE_REGISTRATION_DEPTH_TO_COLOR unsupported for recordings; they hold "
-                     "no depth-to-colour extrinsics): record with registration on");
+    // OpenNI2's file driver supports IMAGE_REGISTRATION_OFF only (PlayerDevice keeps the
+    // driver API's default isImageRegistrationModeSupported()), and a recording holds no
+    // depth-to-colour extrinsics to register it here: depth must have been registered when
+    // recorded. A recording does not say whether it was; its sizes at least must agree.
+    if (dm.getResolutionX() != cm.getResolutionX() || dm.getResolutionY() != cm.getResolutionY())
+      throw fail(path, "depth (" + std::to_string(dm.getResolutionX()) + "x" +
+                           std::to_string(dm.getResolutionY()) + ") and colour (" +
+                           std::to_string(cm.getResolutionX()) + "x" +
+                           std::to_string(cm.getResolutionY()) +
+                           ") differ, so depth was not registered to colour when recorded, and "
+                           "OpenNI2's file driver cannot register it "
+                           "(IMAGE_REGISTRATION_DEPTH_TO_COLOR is not supported for recordings, "
+                           "which hold no depth-to-colour extrinsics): record with registration "
+                           "on");
+    m->registration = "depth taken as registered to colour when recorded";
+    const auto near = [](double a, double b) { return std::abs(a - b) <= 0.01 * std::abs(b); };
+    if (!near(m->depth.stream.getHorizontalFieldOfView(), hfov) ||
+        !near(m->depth.stream.getVerticalFieldOfView(), vfov))
+      m->registration +=
+          " (its field of view differs from colour's: if it was recorded without "
+          "registration, depth and colour are misaligned)";
   }
   if (!(hfov > 0.05 && hfov < 3.0 && vfov > 0.05 && vfov < 3.0))
     throw fail(path, "colour field of view " + std::to_string(hfov) + " x " + std::to_string(vfov) +
@@ -229,7 +240,7 @@ std::string OniFileSource::describe() const {
   return "OpenNI recording " + m->path + " (" + std::to_string(m->camera.ncols) + "x" +
          std::to_string(m->camera.nrows) + ", " + std::to_string(m->depth.recorded) +
          " depth and " + std::to_string(m->colour.recorded) + " colour frames, fx " +
-         std::to_string(m->camera.fx()) + " px from the field of view)";
+         std::to_string(m->camera.fx()) + " px from the field of view; " + m->registration + ")";
 }
 
 Trajectory OniFileSource::groundTruth() const { return m->ground_truth; }

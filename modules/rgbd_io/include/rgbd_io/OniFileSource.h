@@ -16,10 +16,10 @@ namespace hrgbd {
  *
  * - Registration: depth-to-colour registration (IMAGE_REGISTRATION_DEPTH_TO_COLOR) is switched
  *   on when the device supports it. OpenNI2's file driver never does (a recording is played as
- *   recorded), so depth is then taken as already registered, which requires equal resolutions
- *   and fields of view of the two streams (a recording made with registration on); otherwise
- *   the constructor refuses, saying so (a recording holds no depth-to-colour extrinsics to
- *   register it in software).
+ *   recorded) and a recording holds no depth-to-colour extrinsics to register it in software, so
+ *   depth is then taken as registered when recorded: equal resolutions are required (otherwise
+ *   the constructor refuses, saying so), and describe() says when the two fields of view differ
+ *   (a recording made without registration would then be misaligned).
  * - Intrinsics: from the colour stream's fields of view (the only intrinsics a recording holds):
  *   fx = (width / 2) / tan(hfov / 2), principal point at the image centre ((w - 1) / 2).
  * - Pairing: depth and colour frames are paired when their device time stamps differ by less
