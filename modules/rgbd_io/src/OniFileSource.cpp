@@ -63,12 +63,28 @@ struct OniFileSource::Impl {
   Trajectory ground_truth;
   std::string registration;  // how depth comes to be in the colour camera, for describe()
 
+  /** Also after a constructor that threw. OpenNI2's file driver walks its stream list on its
+   * player thread without the list's lock (PlayerDevice::MainLoop), so destroying a stream
+   * while that thread runs can crash it: close the device first (it stops and joins the
+   * thread), then release the streams. */
+  ~Impl() {
+    for (Stream* s : {&depth, &colour}) {
+      s->pending.release();
+      s->stream.stop();
+    }
+    device.close();
+    for (Stream* s : {&depth, &colour}) s->stream.destroy();
+  }
+
   void openStream(Stream& s, openni::SensorType type, const char* name) {
     if (!device.hasSensor(type)) throw fail(path, std::string("has no ") + name + " stream");
     if (s.stream.create(device, type) != openni::STATUS_OK)
       throw fail(path, std::string("cannot create its ") + name + " stream: " + openniError());
     s.recorded = device.getPlaybackControl()->getNumberOfFrames(s.stream);
-    if (s.recorded <= 0) throw fail(path, std::string("its ") + name + " stream has no frames");
+    if (s.recorded <= 0)  // none, or 0xFFFFFFFF: a recorder that never finished the file
+      throw fail(path, std::string("its ") + name +
+                           " stream has no frames or no frame count (a recording that was not "
+                           "finished)");
   }
 
   /** Reads one frame of whichever stream has one; false at the end of the recording. */
@@ -209,17 +225,7 @@ OniFileSource::OniFileSource(const std::string& path) : m(std::make_unique<Impl>
     throw fail(path, "cannot start its streams: " + openniError());
 }
 
-OniFileSource::~OniFileSource() {
-  // The file driver's player thread walks the device's stream list without its lock
-  // (PlayerDevice::MainLoop), so destroying a stream while it runs can crash it: close the
-  // device first (which stops and joins that thread), then release the streams.
-  for (Stream* s : {&m->depth, &m->colour}) {
-    s->pending.release();
-    s->stream.stop();
-  }
-  m->device.close();
-  for (Stream* s : {&m->depth, &m->colour}) s->stream.destroy();
-}
+OniFileSource::~OniFileSource() = default;
 
 mrpt::obs::CObservation3DRangeScan::Ptr OniFileSource::next() {
   for (;;) {
