@@ -4,6 +4,7 @@
 #include "rgbd_io/OniFileSource.h"
 
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -233,6 +234,32 @@ TEST(OniFileSource, TruncatedOrCorruptRecordingsAreClearErrors) {
   const auto bad = (dir / "corrupt.oni").string();
   writeBytes(bad, corrupt, corrupt.size());
   EXPECT_NE(errorOf(bad).find("OpenNI recording " + bad), std::string::npos);
+}
+
+TEST(OniFileSource, AShortFrameIsAClearError) {
+  const auto good = writeDesk("short_frame");
+  auto bytes = slurp(good);
+  // Walk the records (24-byte file header; a record header holds its type at +4, node at +8,
+  // fields size at +12 and payload size at +16) to the third colour frame; halve its payload.
+  const auto u32 = [&](std::size_t at) {
+    std::uint32_t v;
+    std::memcpy(&v, bytes.data() + at, 4);
+    return v;
+  };
+  std::size_t pos = 24, colour_frames = 0;
+  while (pos + 28 <= bytes.size()) {
+    if (u32(pos + 4) == 0x0A && u32(pos + 8) == 2 && ++colour_frames == 3) break;
+    pos += u32(pos + 12) + u32(pos + 16);
+  }
+  ASSERT_EQ(colour_frames, 3u);
+  const std::uint32_t half = u32(pos + 16) / 2;
+  std::memcpy(&bytes[pos + 16], &half, 4);
+  const auto bad = std::filesystem::path(good).parent_path().string() + "/short.oni";
+  writeBytes(bad, bytes, bytes.size());
+  const auto e = errorOf(bad);
+  EXPECT_NE(e.find("colour frame 3 is 640x480 in 460800 bytes, not a whole 640x480 image"),
+            std::string::npos)
+      << e;
 }
 
 TEST(OniFileSource, ABrokenFrameRecordIsSkippedAndCountedAsDropped) {

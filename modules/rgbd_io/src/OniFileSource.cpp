@@ -115,9 +115,25 @@ struct OniFileSource::Impl {
     return true;
   }
 
+  /** Throws unless `f` holds a whole image of the recording's size with `bpp` bytes per pixel. */
+  void checkFrame(const openni::VideoFrameRef& f, const char* name, int bpp) const {
+    const bool fits = f.getWidth() == static_cast<int>(camera.ncols) &&
+                      f.getHeight() == static_cast<int>(camera.nrows) &&
+                      f.getStrideInBytes() >= f.getWidth() * bpp &&
+                      f.getDataSize() >= f.getHeight() * f.getStrideInBytes();
+    if (!fits)
+      throw fail(path, std::string(name) + " frame " + std::to_string(f.getFrameIndex()) + " is " +
+                           std::to_string(f.getWidth()) + "x" + std::to_string(f.getHeight()) +
+                           " in " + std::to_string(f.getDataSize()) + " bytes, not a whole " +
+                           std::to_string(camera.ncols) + "x" + std::to_string(camera.nrows) +
+                           " image (corrupt)");
+  }
+
   mrpt::obs::CObservation3DRangeScan::Ptr makeFrame() {
     const auto& d = depth.pending;
     const auto& c = colour.pending;
+    checkFrame(d, "depth", 2);
+    checkFrame(c, "colour", 3);
     const cv::Mat depth_raw(d.getHeight(), d.getWidth(), CV_16UC1, const_cast<void*>(d.getData()),
                             static_cast<std::size_t>(d.getStrideInBytes()));
     const cv::Mat rgb(c.getHeight(), c.getWidth(), CV_8UC3, const_cast<void*>(c.getData()),
