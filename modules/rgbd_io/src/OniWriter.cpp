@@ -23,8 +23,10 @@ constexpr std::uint32_t kCodecNone = 'N' | ('O' << 8) | ('N' << 16) | (std::uint
 constexpr std::size_t kRecordHeaderSize =
     28;  // magic, type, node, fields, payload (u32), undo (u64)
 
+static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "the ONI format is little-endian");
+
 template <class T>
-void put(std::string& s, T value) {  // little-endian hosts only (x86-64, arm64)
+void put(std::string& s, T value) {
   s.append(reinterpret_cast<const char*>(&value), sizeof(value));
 }
 

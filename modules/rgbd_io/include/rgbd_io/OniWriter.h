@@ -7,6 +7,8 @@
  * and new-data records, then per stream a node-removed record and a seek table, the node-added
  * records rewritten with the frame count and seek table position, and the end record). Frames are
  * stored uncompressed (codec "NONE"): depth as DEPTH_1_MM (uint16 millimetres), colour as RGB888.
+ * The layout follows OpenNI2's sources (Source/Core/OniRecorder.cpp and OniDataRecords.h, the
+ * reader in Source/Drivers/OniFile/PlayerNode.cpp); like them, little-endian hosts only.
  */
 #include <cstdint>
 #include <fstream>
