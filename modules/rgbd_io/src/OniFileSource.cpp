@@ -9,7 +9,9 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <opencv2/imgproc.hpp>
+#include <sstream>
 #include <stdexcept>
 
 #include "rgbd_core/RgbdFrame.h"
@@ -259,10 +261,12 @@ mrpt::obs::CObservation3DRangeScan::Ptr OniFileSource::next() {
 }
 
 std::string OniFileSource::describe() const {
-  return "OpenNI recording " + m->path + " (" + std::to_string(m->camera.ncols) + "x" +
-         std::to_string(m->camera.nrows) + ", " + std::to_string(m->depth.recorded) +
-         " depth and " + std::to_string(m->colour.recorded) + " colour frames, fx " +
-         std::to_string(m->camera.fx()) + " px from the field of view; " + m->registration + ")";
+  std::ostringstream s;
+  s << "OpenNI recording " << m->path << " (" << m->camera.ncols << "x" << m->camera.nrows << ", "
+    << m->depth.recorded << " depth and " << m->colour.recorded << " colour frames, fx "
+    << std::fixed << std::setprecision(1) << m->camera.fx() << " px from the field of view; "
+    << m->registration << ")";
+  return s.str();
 }
 
 Trajectory OniFileSource::groundTruth() const { return m->ground_truth; }
