@@ -10,7 +10,7 @@ namespace {
 /** A 10-frame simulated desk recording (rendered once per process). */
 const std::string& recording() {
   static const std::string path = [] {
-    const auto dir = hrgbd::test::tempDir("oni_apps");
+    const auto dir = hrgbd::test::scratchDir("oni_apps");
     const auto oni = dir + "/desk.oni";
     const auto r = hrgbd::test::runApp("rgbd-simulate", "--scene desk -n 10 --oni " + oni);
     EXPECT_EQ(r.code, 0) << r.out << r.err;
@@ -52,7 +52,7 @@ TEST(OniApps, OdometryPlaysTheRecordingAndScoresItAgainstItsGroundTruth) {
 }
 
 TEST(OniApps, ABrokenRecordingIsAnErrorNamingIt) {
-  const auto dir = hrgbd::test::tempDir("oni_apps_bad");
+  const auto dir = hrgbd::test::scratchDir("oni_apps_bad");
   std::ofstream(dir + "/notes.oni") << "not a recording\n";
   hrgbd::test::expectFailure("hybrid-rgbd-odometry",
                              "--input " + dir + "/notes.oni --trajectory " + dir + "/t.txt",

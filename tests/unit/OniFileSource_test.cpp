@@ -66,7 +66,7 @@ std::uint64_t deviceMicroseconds(double t, double t0) {
 std::string writeDesk(const std::string& name, bool depth = true, bool colour = true,
                       std::uint32_t skip = 0) {
   const auto& q = desk();
-  const auto path = hrgbd::test::tempDir("oni_" + name) + "/desk.oni";
+  const auto path = hrgbd::test::scratchDir("oni_" + name) + "/desk.oni";
   const auto spec = specOf(q.camera);
   OniWriter w(path, depth ? spec : OniStreamSpec{0, 0}, colour ? spec : OniStreamSpec{0, 0});
   for (std::size_t i = 0; i < q.t.size(); ++i) {
@@ -169,7 +169,7 @@ TEST(OniFileSource, OdometryOnTheRecordingFollowsTheSimulatedPath) {
 }
 
 TEST(OniFileSource, BadFilesAreClearErrors) {
-  const auto dir = hrgbd::test::tempDir("oni_bad");
+  const auto dir = hrgbd::test::scratchDir("oni_bad");
   EXPECT_NE(errorOf(dir + "/missing.oni").find("missing or unreadable"), std::string::npos);
 
   std::ofstream(dir + "/text.oni") << "not a recording\n";
@@ -195,7 +195,7 @@ TEST(OniFileSource, BadFilesAreClearErrors) {
 }
 
 TEST(OniFileSource, SaysWhenDepthAndColourFieldsOfViewDiffer) {
-  const auto path = hrgbd::test::tempDir("oni_fov") + "/fov.oni";
+  const auto path = hrgbd::test::scratchDir("oni_fov") + "/fov.oni";
   {
     OniStreamSpec depth{64, 48, 1.02, 0.80}, colour{64, 48, 1.09, 0.85};  // Kinect-like
     OniWriter w(path, depth, colour);

@@ -9,7 +9,7 @@ using hrgbd::OniStreamSpec;
 using hrgbd::OniWriter;
 
 TEST(OniWriter, RefusesFramesThatDoNotFitTheirStream) {
-  const auto dir = hrgbd::test::tempDir("oni_writer_refuses");
+  const auto dir = hrgbd::test::scratchDir("oni_writer_refuses");
   OniWriter w(dir + "/a.oni", OniStreamSpec{64, 48}, OniStreamSpec{64, 48});
   EXPECT_THROW(w.writeDepth(0, 1, cv::Mat(48, 64, CV_32FC1, cv::Scalar(1))), std::invalid_argument);
   EXPECT_THROW(w.writeDepth(0, 1, cv::Mat(24, 32, CV_16UC1, cv::Scalar(1))), std::invalid_argument);
@@ -21,7 +21,7 @@ TEST(OniWriter, RefusesFramesThatDoNotFitTheirStream) {
 }
 
 TEST(OniWriter, TheRecordingAppearsOnlyWhenClosed) {
-  const auto dir = hrgbd::test::tempDir("oni_writer_close");
+  const auto dir = hrgbd::test::scratchDir("oni_writer_close");
   const auto path = dir + "/b.oni";
   {
     OniWriter w(path, OniStreamSpec{64, 48}, OniStreamSpec{0, 0});
