@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace hrgbd::test {
 
@@ -25,6 +26,20 @@ inline std::string tempDir(const std::string& name) {
   std::filesystem::remove_all(p);
   std::filesystem::create_directories(p);
   return p.string();
+}
+
+/** A tempDir() that is removed when the test program exits normally, for tests that write large
+ * files (recordings of tens of MB). */
+inline std::string scratchDir(const std::string& name) {
+  struct Cleanup {
+    std::vector<std::string> dirs;
+    ~Cleanup() {
+      for (const auto& d : dirs) std::filesystem::remove_all(d);
+    }
+  };
+  static Cleanup cleanup;
+  cleanup.dirs.push_back(tempDir(name));
+  return cleanup.dirs.back();
 }
 
 }  // namespace hrgbd::test

@@ -10,7 +10,8 @@ int main(int argc, char** argv) {
   hrgbd::CommandLine cmd("hybrid-rgbd-odometry",
                          "RGB-D odometry (ORB / geometric features + MSSE)");
   Text config("c", "config", "INI file", false, "", "FILE.ini", cmd);
-  Text input("i", "input", "rawlog, TUM folder or 'openni2'", false, "", "INPUT", cmd);
+  Text input("i", "input", "rawlog, TUM folder, OpenNI recording (.oni) or 'openni2'", false, "",
+             "INPUT", cmd);
   Text traj("t", "trajectory", "output trajectory (TUM format)", false, "", "OUT.txt", cmd);
   Text method("m", "method", "odometry method (default: the INI's [Odometry] method)", false, "",
               cmd.oneOf<hrgbd::Method>(), cmd);

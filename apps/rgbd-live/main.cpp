@@ -7,7 +7,8 @@
 int main(int argc, char** argv) {
   hrgbd::CommandLine cmd("rgbd-live", "live RGB-D odometry and coloured map (MRPT 3D window)");
   TCLAP::ValueArg<std::string> config("c", "config", "INI file", false, "", "FILE.ini", cmd);
-  TCLAP::ValueArg<std::string> input("i", "input", "'openni2' (default), rawlog or TUM folder",
+  TCLAP::ValueArg<std::string> input("i", "input",
+                                     "'openni2' (default), rawlog, TUM folder or .oni recording",
                                      false, "openni2", "INPUT", cmd);
   TCLAP::ValueArg<double> rate("", "rate", "recorded input: x recorded speed (1); 0 = fastest",
                                false, 1.0, cmd.atLeast(0.0, "R"), cmd);

@@ -58,6 +58,7 @@ int main(int argc, char** argv) {
                                "FILE", cmd);
   ValueArg<std::string> rawlog("o", "rawlog", "output rawlog", false, "", "OUT.rawlog", cmd);
   ValueArg<std::string> tum("", "tum", "output TUM folder", false, "", "FOLDER", cmd);
+  ValueArg<std::string> oni("", "oni", "output OpenNI recording", false, "", "OUT.oni", cmd);
   ValueArg<std::string> config("c", "config",
                                "INI file whose [Simulator] section sets the scene and the sensor "
                                "model; the options given here override its keys",
@@ -78,11 +79,12 @@ int main(int argc, char** argv) {
       std::cout << iniText(p);
       return;
     }
-    if (rawlog.getValue().empty() && tum.getValue().empty())
-      throw hrgbd::UsageError("give --rawlog and/or --tum");
+    if (rawlog.getValue().empty() && tum.getValue().empty() && oni.getValue().empty())
+      throw hrgbd::UsageError("give --rawlog, --tum and/or --oni");
     const hrgbd::sim::SimOutputs outputs{
         rawlog.getValue(), tum.getValue(),
-        hrgbd::parseEnum<hrgbd::ImageStorage>(images.getValue(), "command line", "images")};
+        hrgbd::parseEnum<hrgbd::ImageStorage>(images.getValue(), "command line", "images"),
+        oni.getValue()};
     hrgbd::checkJobPaths(
         {{config.getValue(), "the configuration file (--config)"},
          {p.motion == "sweep" ? "" : p.motion,

@@ -94,8 +94,8 @@ TEST(Simulator, SameSeedSameFrames) {
   SimParams p;
   p.frames = 2;
   const auto dir = hrgbd::test::tempDir("sim_seed");
-  const auto a = simulate(p, {dir + "/a.rawlog", "", hrgbd::ImageStorage::Inline});
-  const auto b = simulate(p, {dir + "/b.rawlog", "", hrgbd::ImageStorage::Inline});
+  const auto a = simulate(p, {dir + "/a.rawlog", "", hrgbd::ImageStorage::Inline, ""});
+  const auto b = simulate(p, {dir + "/b.rawlog", "", hrgbd::ImageStorage::Inline, ""});
   std::ifstream fa(dir + "/a.rawlog", std::ios::binary), fb(dir + "/b.rawlog", std::ios::binary);
   const std::string sa{std::istreambuf_iterator<char>(fa), {}},
       sb{std::istreambuf_iterator<char>(fb), {}};

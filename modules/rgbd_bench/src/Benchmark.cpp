@@ -82,7 +82,7 @@ std::vector<BenchSequence> prepareSequences(const BenchmarkParams& p,
           sp.frames = p.sim_frames;
           sp.seed = p.sim_seed;
           sp.motion = motion;
-          const auto r = sim::simulate(sp, {seq.input, "", ImageStorage::ExternalJpeg});
+          const auto r = sim::simulate(sp, {seq.input, "", ImageStorage::ExternalJpeg, ""});
           log << "rendered " << seq.name << ": " << r.frames << " frames, " << std::fixed
               << std::setprecision(1) << 1000.0 / r.ms_per_frame << " frames/s\n";
         }

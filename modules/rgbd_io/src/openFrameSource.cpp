@@ -3,6 +3,7 @@
 #include <mrpt/system/filesystem.h>
 
 #include "rgbd_core/Config.h"
+#include "rgbd_io/OniFileSource.h"
 #include "rgbd_io/OpenNI2Source.h"
 #include "rgbd_io/RawlogSource.h"
 #include "rgbd_io/TumSource.h"
@@ -12,6 +13,7 @@ namespace hrgbd {
 std::unique_ptr<FrameSource> openFrameSource(const std::string& input,
                                              const mrpt::config::CConfigFileBase& cfg) {
   if (input == "openni2") return std::make_unique<OpenNI2Source>(cfg, "OpenNI2");
+  if (isOniFile(input)) return std::make_unique<OniFileSource>(input);
   if (mrpt::system::directoryExists(input)) {
     TumSourceParams p;
     p.loadFromConfigFile(cfg, "TumSource");

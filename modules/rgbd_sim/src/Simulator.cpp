@@ -15,6 +15,7 @@
 #include "rgbd_core/Intrinsics.h"
 #include "rgbd_core/OutputFile.h"
 #include "rgbd_core/RgbdFrame.h"
+#include "rgbd_io/OniWriter.h"
 #include "rgbd_io/RawlogSource.h"
 
 namespace hrgbd::sim {
@@ -181,10 +182,27 @@ class SequenceWriter {
     if (!outputs.rawlog.empty())
       m_rawlog = std::make_unique<RawlogWriter>(outputs.rawlog, outputs.images, 9);
     if (!outputs.tum_folder.empty()) openTumFolder(scene_name);
+    if (!outputs.oni.empty()) {
+      OniStreamSpec spec;
+      spec.width = cam.width;
+      spec.height = cam.height;
+      spec.hfov = 2 * std::atan(0.5 * cam.width / cam.fx);
+      spec.vfov = 2 * std::atan(0.5 * cam.height / cam.fy);
+      m_oni = std::make_unique<OniWriter>(outputs.oni, spec, spec);
+    }
   }
 
   /** Frame at time stamp t [s]. */
   void write(double t, const SensorFrame& frame) {
+    if (m_oni) {
+      // The recording's clock: device microseconds from the first frame; depth in millimetres.
+      const auto us = static_cast<std::uint64_t>(std::llround((t - kStart) * 1e6));
+      const auto index = static_cast<std::uint32_t>(++m_oni_frames);
+      cv::Mat mm;
+      frame.depth.convertTo(mm, CV_16UC1, 1000.0 / kDepthFactor);
+      m_oni->writeDepth(us, index, mm);
+      m_oni->writeColour(us, index, frame.bgr);
+    }
     if (m_rawlog)
       m_rawlog->write(*makeRgbdObservation(frame.bgr, frame.depth, 1.0 / kDepthFactor, m_camera, t,
                                            "RGBD_SIM"));
@@ -200,6 +218,12 @@ class SequenceWriter {
 
   /** Ground truth beside the rawlog and into the TUM folder; every file moved into place. */
   void finish(const Trajectory& ground_truth) {
+    if (m_oni) {
+      m_oni->close();
+      Trajectory in_recording_clock = ground_truth;
+      for (auto& p : in_recording_clock) p.t = std::round((p.t - kStart) * 1e6) * 1e-6;  // [us]
+      saveTumTrajectory(groundTruthPathFor(m_outputs.oni), in_recording_clock);
+    }
     if (m_rawlog) {
       m_rawlog->close();
       saveTumTrajectory(groundTruthPathFor(m_outputs.rawlog), ground_truth);
@@ -239,6 +263,8 @@ class SequenceWriter {
   mrpt::img::TCamera m_camera;
   std::unique_ptr<RawlogWriter> m_rawlog;
   std::unique_ptr<StreamOutput> m_rgb_txt, m_depth_txt;
+  std::unique_ptr<OniWriter> m_oni;
+  int m_oni_frames = 0;
 };
 
 double median(std::vector<double> v) {
@@ -255,6 +281,10 @@ std::vector<JobPath> writtenFiles(const SimOutputs& outputs) {
     out.push_back({groundTruthPathFor(outputs.rawlog), "--rawlog's ground truth", false, true});
     if (outputs.images != ImageStorage::Inline)
       out.push_back({imagesFolderFor(outputs.rawlog), "--rawlog's image folder", true, true});
+  }
+  if (!outputs.oni.empty()) {
+    out.push_back({outputs.oni, "--oni", false, true});
+    out.push_back({groundTruthPathFor(outputs.oni), "--oni's ground truth", false, true});
   }
   if (!outputs.tum_folder.empty()) {
     for (const auto* name : {"rgb.txt", "depth.txt", "groundtruth.txt"})

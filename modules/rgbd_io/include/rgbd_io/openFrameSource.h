@@ -10,7 +10,8 @@
 
 namespace hrgbd {
 
-/** "openni2" -> live sensor (INI section [OpenNI2]); a folder -> TUM dataset (INI section
+/** "openni2" -> live sensor (INI section [OpenNI2]); "*.oni" -> OpenNI recording played
+ * through OpenNI2's file driver (OniFileSource.h); a folder -> TUM dataset (INI section
  * [TumSource]); anything else -> rawlog file. Throws with a clear message if it cannot open. */
 std::unique_ptr<FrameSource> openFrameSource(const std::string& input,
                                              const mrpt::config::CConfigFileBase& cfg);

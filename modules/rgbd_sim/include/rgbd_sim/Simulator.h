@@ -1,7 +1,8 @@
 #pragma once
 /** \file Simulator.h
  * RGB-D sequences with exact ground truth: a Scene, a camera path (procedural sweep or replayed
- * real hand-held motion) and the Kinect model, written as a rawlog and/or a TUM folder. */
+ * real hand-held motion) and the Kinect model, written as a rawlog, a TUM folder and/or an OpenNI
+ * recording. */
 #include <string>
 #include <vector>
 
@@ -53,6 +54,10 @@ struct SimOutputs {
   std::string rawlog;      //!< "" = none; ground truth goes to <stem>_groundtruth.txt
   std::string tum_folder;  //!< "" = none; rgb/, depth/, rgb.txt, depth.txt, groundtruth.txt
   ImageStorage images = ImageStorage::Inline;  //!< colour storage in the rawlog
+  /** "" = none; an OpenNI recording (.oni, OniWriter.h: depth in mm, colour RGB888, uncompressed)
+   * whose clock starts at 0 with the first frame; ground truth in that clock goes to
+   * <stem>_groundtruth.txt. */
+  std::string oni;
 };
 
 struct SimResult {
