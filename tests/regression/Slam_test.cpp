@@ -128,6 +128,6 @@ TEST(Slam, WithoutLoopsItIsTheOdometry) {
   EXPECT_GT(slam.slam_stats.keyframes, 3u);
   for (std::size_t i = 0; i < slam.results.size(); ++i)
     EXPECT_LT((slam.results[i].pose.asVectorVal() - odometry.results[i].pose.asVectorVal()).norm(),
-              1e-6)
+              1e-4)  // OpenCV's threaded sums vary the tracking itself by ~1e-5 between runs
         << "frame " << i;
 }
