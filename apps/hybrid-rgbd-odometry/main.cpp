@@ -26,7 +26,8 @@ int main(int argc, char** argv) {
                  "OUT.simplemap", cmd);
   Text ply("", "map-ply", "coloured map as PLY", false, "", "OUT.ply", cmd);
   Text scene("", "map-scene", "coloured map and path as .3Dscene", false, "", "OUT.3Dscene", cmd);
-  TCLAP::SwitchArg slam("", "slam", "SLAM mode: loop closures and pose-graph optimisation", cmd);
+  TCLAP::SwitchArg slam("", "slam", "SLAM mode on: loop closures and pose-graph optimisation", cmd);
+  TCLAP::SwitchArg no_slam("", "no-slam", "SLAM mode off: the odometry alone", cmd);
   Text graph("", "graph", "SLAM mode: the pose graph, MRPT text format", false, "", "OUT.graph",
              cmd);
   TCLAP::SwitchArg quiet("q", "quiet", "no progress bar", cmd);
@@ -50,6 +51,7 @@ int main(int argc, char** argv) {
     o.map_ply = ply.getValue();
     o.map_scene = scene.getValue();
     o.slam = slam.getValue();
+    o.no_slam = no_slam.getValue();
     o.graph = graph.getValue();
     hrgbd::runPlayback(o, std::cout);
   });

@@ -19,8 +19,9 @@ int main(int argc, char** argv) {
                                "close S (>= 0) seconds after the data ends and save; without it "
                                "the window stays until it is closed or [q]",
                                false, -1, cmd.atLeast(0.0, "S"), cmd);
-  TCLAP::SwitchArg slam("", "slam", "SLAM mode: loop closures, the map snaps to optimised poses",
+  TCLAP::SwitchArg slam("", "slam", "SLAM mode on: loops shown, the map snaps to optimised poses",
                         cmd);
+  TCLAP::SwitchArg no_slam("", "no-slam", "SLAM mode off: the odometry alone", cmd);
   TCLAP::ValueArg<int> frames("n", "max-frames", "stop after N frames (0 = all)", false, 0,
                               cmd.atLeast(0, "N"), cmd);
   return cmd.run(argc, argv, [&] {
@@ -31,6 +32,7 @@ int main(int argc, char** argv) {
     o.save_prefix = prefix.getValue();
     o.hold_seconds = hold.getValue();
     o.slam = slam.getValue();
+    o.no_slam = no_slam.getValue();
     o.max_frames = frames.getValue();
     hrgbd::runLive(o, std::cout);
   });

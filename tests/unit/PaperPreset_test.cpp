@@ -40,7 +40,8 @@ TEST(PaperPreset, DiffersFromTheDefaultsInThePapersSwitchesOnly) {
                       {"Benchmark", "real_sequences"},
                       {"Benchmark", "cache_folder"},
                       {"Benchmark", "output_folder"},
-                     {"Benchmark", "paper_config"}};
+                      {"Benchmark", "paper_config"},
+                      {"Slam", "enabled"}};
   EXPECT_EQ(differences(defaults, paper), expected);
 
   hrgbd::OdometryParams p;

@@ -76,14 +76,14 @@ void PosedRawlogSink::correct(const SlamPoses& slam) { m_corrected = slam.poses;
 void PosedRawlogSink::finish(std::ostream& log) {
   if (!m_writer) return;
   const std::size_t written = m_writer->written();
+  if (!m_corrected.empty() && m_corrected.size() != written)
+    throw std::logic_error("PosedRawlogSink: optimised poses do not match the frames");
   m_writer->close();
   m_writer.reset();
   if (m_corrected.empty()) {
     log << "rawlog with poses: " << m_path << "\n";
     return;
   }
-  if (m_corrected.size() != written)
-    throw std::logic_error("PosedRawlogSink: optimised poses do not match the frames");
   // Read back object by object and written again with the optimised poses; the external image
   // names are kept as they are (MRPT loads external images lazily, and only on demand).
   mrpt::io::CFileGZInputStream in(m_path);

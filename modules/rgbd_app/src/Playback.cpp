@@ -39,7 +39,9 @@ PlaybackJob resolveJob(const PlaybackOptions& opt) {
   job.odometry.loadFromConfigFile(*job.cfg, "Odometry");
   if (!opt.method.empty()) job.odometry.method = parseMethod(opt.method);
   job.slam.loadFromConfigFile(*job.cfg, "Slam");
+  if (opt.slam && opt.no_slam) throw UsageError("--slam and --no-slam together");
   if (opt.slam) job.slam.enabled = true;
+  if (opt.no_slam) job.slam.enabled = false;
   // the SLAM mode verifies loops with the product's registration: the baselines and peers run
   // as published (an explicit --slam with one of them is a usage error)
   if (job.slam.enabled && !isProductMethod(job.odometry.method)) {
@@ -217,7 +219,8 @@ PlaybackSummary runPlayback(const PlaybackOptions& opt, std::ostream& log) {
   FrameLoop loop(*source, std::move(odometry), sinks.list(), max_frames);
   if (job.slam.enabled) loop.setSlam(std::make_unique<KeyframeSlam>(job.slam, job.odometry));
   if (!job.graph.empty() && !job.slam.enabled)
-    throw UsageError("a pose graph (--graph / [Playback] graph) needs the SLAM mode (--slam)");
+    throw UsageError(
+        "a pose graph (--graph / [Playback] graph) needs the SLAM mode ([Slam] enabled)");
   loop.run();
   loop.finish(log);
   if (!job.graph.empty()) {

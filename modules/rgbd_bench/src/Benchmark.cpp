@@ -104,6 +104,7 @@ std::vector<BenchSequence> prepareSequences(const BenchmarkParams& p,
 std::vector<std::string> benchmarkMethods() {
   auto names = enumNameList<Method>();
   names.push_back("hybrid_slam");
+  names.push_back("hybrid_odometry");
   names.push_back("hybrid_paper");
   return names;
 }
@@ -139,6 +140,7 @@ BenchRun runOne(const BenchSequence& seq, const std::string& method, const std::
   opt.csv = (traj_dir / (stem + ".csv")).string();
   opt.method = method;
   if (method == "hybrid_slam") opt.method = "hybrid", opt.slam = true;
+  if (method == "hybrid_odometry") opt.method = "hybrid", opt.no_slam = true;
   if (method == "hybrid_paper") opt.method = "hybrid", opt.config = p.paper_config;
   opt.max_frames = p.max_frames;
   opt.progress = progress;

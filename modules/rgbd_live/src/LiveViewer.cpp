@@ -62,7 +62,9 @@ void LiveViewer::clear() {
   (void)scene;
   m_cloud->clear();
   m_path->clear();
+  if (m_loops) m_loops->clear();
   m_shown = 0;
+  m_loop_count = 0;
   m_win->unlockAccess3DScene();
   m_win->repaint();
 }
@@ -144,8 +146,8 @@ void LiveViewer::update(const mrpt::obs::CObservation3DRangeScan& obs, const Fra
   m_win->unlockAccess3DScene();
 
   char line[256];
-  std::snprintf(line, sizeof line, "frame %zu%s  path %s  %s  inliers %zu/%zu  %.1f fps  map %zu pts",
-                path.size(),
+  std::snprintf(line, sizeof line,
+                "frame %zu%s  path %s  %s  inliers %zu/%zu  %.1f fps  map %zu pts", path.size(),
                 m_loop_count ? ("  loops " + std::to_string(m_loop_count)).c_str() : "",
                 r.path.c_str(), toString(r.status), r.inliers, r.matches, fps, pts.size());
   m_win->addTextMessage(10, -40, line, 1,

@@ -13,10 +13,13 @@ namespace {
 using Vector6d = Eigen::Matrix<double, 6, 1>;
 using Matrix6d = Eigen::Matrix<double, 6, 6>;
 
-// Bilinear sample of a CV_32F image at (u, v), inside [0, cols - 1) x [0, rows - 1).
-float bilinear(const cv::Mat& m, float u, float v) {
-  const int u0 = static_cast<int>(u), v0 = static_cast<int>(v);
-  const float a = u - u0, b = v - v0;
+// Bilinear sample of a CV_32F image at (u, v), inside [0, cols - 1) x [0, rows - 1). Taken in
+// double and clamped: u = 638.99999999 rounded to float is 639, one past the last 2x2 cell
+// (AddressSanitizer found it).
+float bilinear(const cv::Mat& m, double u, double v) {
+  const int u0 = std::min(static_cast<int>(u), m.cols - 2),
+            v0 = std::min(static_cast<int>(v), m.rows - 2);
+  const float a = static_cast<float>(u - u0), b = static_cast<float>(v - v0);
   const float* r0 = m.ptr<float>(v0) + u0;
   const float* r1 = m.ptr<float>(v0 + 1) + u0;
   return (1 - b) * ((1 - a) * r0[0] + a * r0[1]) + b * ((1 - a) * r1[0] + a * r1[1]);

@@ -46,7 +46,9 @@ std::string toText(const SlamStats& s) {
 }
 
 KeyframeSlam::KeyframeSlam(const SlamParams& params, const OdometryParams& odometry)
-    : m_params(params), m_odometry(odometry), m_registration(makeRegistration(loopRegistration(odometry, params))) {
+    : m_params(params),
+      m_odometry(odometry),
+      m_registration(makeRegistration(loopRegistration(odometry, params))) {
   if (m_params.background) m_thread = std::thread([this] { work(); });
 }
 
@@ -63,7 +65,13 @@ void KeyframeSlam::stopWorker() {
   m_thread.join();
 }
 
+void KeyframeSlam::rethrowWorkerFailure() {
+  std::lock_guard<std::mutex> lock(m_mutex);
+  if (m_failed) std::rethrow_exception(m_failed);
+}
+
 bool KeyframeSlam::add(FrameResult& r, RgbdOdometry& tracker) {
+  rethrowWorkerFailure();
   if (r.keyframe && r.registered() && tracker.keyframe()) {
     Job job{m_tracker_kf.size(), std::make_shared<Frame>(*tracker.keyframe()), std::nullopt,
             r.pose};
@@ -121,8 +129,14 @@ void KeyframeSlam::work() {
     m_queue.pop_front();
     m_busy = true;
     lock.unlock();
-    process(std::move(job));
+    std::exception_ptr failed;
+    try {
+      process(std::move(job));
+    } catch (...) {  // handed to the tracking thread, which rethrows it (add(), flush())
+      failed = std::current_exception();
+    }
     lock.lock();
+    if (failed && !m_failed) m_failed = failed;
     m_busy = false;
     if (m_queue.empty()) m_idle.notify_all();
   }
@@ -213,8 +227,9 @@ std::optional<PoseGraphEdge> KeyframeSlam::verify(std::size_t id, std::size_t ca
 void KeyframeSlam::flush() {
   if (m_params.background) {
     std::unique_lock<std::mutex> lock(m_mutex);
-    m_idle.wait(lock, [&] { return m_queue.empty() && !m_busy; });
+    m_idle.wait(lock, [&] { return (m_queue.empty() && !m_busy) || m_failed; });
   }
+  rethrowWorkerFailure();
   if (m_graph.nodes() == 0) return;
   const auto opt = m_graph.optimize(m_params.loop_max_chi2, m_params.optimizer_iterations);
   std::lock_guard<std::mutex> lock(m_mutex);
@@ -222,26 +237,24 @@ void KeyframeSlam::flush() {
   m_stats.optimize_ms.push_back(opt.ms);
   ++m_stats.optimizations;
   publish();
+  m_applied = m_optimizations;  // the final poses are every keyframe's, not a correction
+  m_tracker_kf = m_graph.poses();
 }
 
 SlamPoses KeyframeSlam::poses() const {
-  std::vector<mrpt::poses::CPose3D> optimized;
   std::vector<PoseGraphEdge> loops;
   {
     std::lock_guard<std::mutex> lock(m_mutex);
-    optimized = m_optimized;
     loops = m_loops;
   }
-  auto keyframe = [&](std::size_t k) {
-    if (k < optimized.size()) return optimized[k];
-    if (k < m_tracker_kf.size()) return m_tracker_kf[k];
-    return mrpt::poses::CPose3D();
-  };
+  // m_tracker_kf holds the optimisation last applied (and after flush() the final one), so every
+  // frame follows one consistent set of keyframe poses; re-orthonormalised (toPose()): the
+  // optimiser's nodes drift off SO(3) by rounding, and CPose3D's angles and matrix then disagree
   SlamPoses out;
-  // re-orthonormalised (toPose()): the optimiser's nodes drift off SO(3) by rounding, and
-  // CPose3D's angles and matrix then disagree
   for (const auto& p : m_places)
-    out.poses.push_back(toPose(toIsometry(keyframe(p.keyframe) + p.relative)));
+    out.poses.push_back(p.keyframe < m_tracker_kf.size()
+                            ? toPose(toIsometry(m_tracker_kf[p.keyframe] + p.relative))
+                            : p.relative);
   for (const auto& e : loops) {
     out.loops.emplace_back(m_keyframe_frame.at(e.from), m_keyframe_frame.at(e.to));
     out.loop_measured.push_back(e.relative);
@@ -265,6 +278,7 @@ void KeyframeSlam::reset() {
   m_optimized.clear();
   m_loops.clear();
   m_stop = m_busy = false;
+  m_failed = nullptr;
   m_applied = m_optimizations = 0;
   m_stats = SlamStats();
   m_registration = makeRegistration(loopRegistration(m_odometry, m_params));

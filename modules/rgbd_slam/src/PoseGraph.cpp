@@ -3,6 +3,7 @@
 #include <mrpt/graphslam/levmarq.h>
 #include <mrpt/poses/Lie/SE.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <stdexcept>
 
@@ -72,6 +73,18 @@ PoseGraphOptimization PoseGraph::optimize(double max_chi2, int max_iterations) {
       mrpt::graphslam::TResultInfoSpaLevMarq info;
       mrpt::graphslam::optimize_graph_spa_levmarq(g, info, nullptr, extra);
       out.iterations += info.num_iters;
+      const bool finite = std::all_of(g.nodes.begin(), g.nodes.end(), [](const auto& n) {
+        return n.second.asVectorVal().array().isFinite().all();
+      });
+      if (!finite) {  // diverged: the poses stay as they were, the newest loop goes
+        std::size_t newest = m_edges.size();
+        for (std::size_t i = 0; i < m_edges.size(); ++i)
+          if (m_edges[i].loop && m_active[i]) newest = i;
+        if (newest == m_edges.size()) break;
+        m_active[newest] = false;
+        out.dropped.push_back(newest);
+        continue;
+      }
       // re-orthonormalised: the optimiser's compositions drift off SO(3) by rounding
       for (std::size_t i = 0; i < m_poses.size(); ++i)
         m_poses[i] = toPose(toIsometry(g.nodes.at(i)));

@@ -31,7 +31,8 @@ struct PlaybackOptions {
   std::string simplemap;      //!< CSimpleMap of (pose, frame) for observations2map
   std::string map_ply;        //!< coloured map, PLY
   std::string map_scene;      //!< coloured map + camera path, .3Dscene
-  bool slam = false;          //!< SLAM mode, whatever [Slam] enabled says
+  bool slam = false;          //!< SLAM mode on, whatever [Slam] enabled says
+  bool no_slam = false;       //!< SLAM mode off, whatever [Slam] enabled says
   std::string graph;          //!< SLAM mode: the pose graph, MRPT text format ("" = [Playback])
   bool ini_outputs = true;    //!< false: only the outputs set here (CSV, map, rawlog) are written
 

@@ -15,9 +15,9 @@
 
 namespace hrgbd {
 
-/** The benchmark's method names: every [Odometry] method, and two variants of hybrid:
- * `hybrid_slam` (SLAM mode) and `hybrid_paper` (the configuration `paper_config`, the paper's
- * pipeline as published). */
+/** The benchmark's method names: every [Odometry] method, and variants of hybrid: `hybrid_slam`
+ * and `hybrid_odometry` (the SLAM mode on / off, whatever [Slam] says) and `hybrid_paper` (the
+ * configuration `paper_config`, the paper's pipeline as published). */
 std::vector<std::string> benchmarkMethods();
 
 /** INI section [Benchmark]. Lists are separated by spaces; paths are relative to the INI. */
@@ -36,14 +36,14 @@ struct BenchmarkParams : public Params<BenchmarkParams> {
   /** Real sequences: TUM folders or rawlogs with ground truth. Missing ones are reported and
    * skipped (../shared/data is not on every machine). */
   std::vector<std::string> real_sequences;
-  int max_frames = 0;                            //!< [count] per run, 0 = all
-  std::string cache_folder = "benchmark_cache";  //!< rendered simulated sequences (reused)
-  std::string output_folder = "benchmark";       //!< results.md, results.csv, trajectories
+  int max_frames = 0;                             //!< [count] per run, 0 = all
+  std::string cache_folder = "benchmark_cache";   //!< rendered simulated sequences (reused)
+  std::string output_folder = "benchmark";        //!< results.md, results.csv, trajectories
   std::string paper_config = "config/paper.ini";  //!< the configuration of `hybrid_paper`
 
   template <class P, class V>
   static void declare(P& p, V& v) {
-    HRGBD_PARAM(methods, "any of [Odometry] method, hybrid_slam, hybrid_paper",
+    HRGBD_PARAM(methods, "any [Odometry] method, hybrid_slam|odometry|paper",
                 OneOf{benchmarkMethods()}, NonEmpty{});
     HRGBD_PARAM(sim_scenes, "scene types, each near (~1 m)", OneOf{sim::sceneTypes()});
     HRGBD_PARAM(sim_far, "also far (~2 m) texture, structure, structure_texture");

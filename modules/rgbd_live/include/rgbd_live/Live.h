@@ -16,8 +16,9 @@ struct LiveOptions {
   /** < 0: keep the window until closed or [q]; >= 0: close this many seconds after the data ends
    * (scripts and the Xvfb test). */
   double hold_seconds = -1;
-  int max_frames = 0;  //!< stop after N frames (0 = all)
-  bool slam = false;   //!< SLAM mode, whatever [Slam] enabled says
+  int max_frames = 0;    //!< stop after N frames (0 = all)
+  bool slam = false;     //!< SLAM mode on, whatever [Slam] enabled says
+  bool no_slam = false;  //!< SLAM mode off, whatever [Slam] enabled says
 };
 
 /** Runs until the data ends (and the hold expires) or the window is closed. Throws with a clear

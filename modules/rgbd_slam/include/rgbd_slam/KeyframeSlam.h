@@ -11,6 +11,7 @@
 #include <condition_variable>
 #include <cstddef>
 #include <deque>
+#include <exception>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -54,7 +55,8 @@ class KeyframeSlam {
    * finished to the tracker; `r.pose` follows. Returns true when the poses changed (an
    * optimisation was applied): poses() then gives the corrected ones. */
   bool add(FrameResult& r, RgbdOdometry& tracker);
-  /** Waits for the loop search to finish the keyframes handed to it and optimises. */
+  /** Waits for the loop search to finish the keyframes handed to it and optimises. add() and
+   * flush() rethrow an exception of the loop search (e.g. out of memory). */
   void flush();
   /** The current estimate of every frame's pose and the loops. */
   SlamPoses poses() const;
@@ -84,6 +86,8 @@ class KeyframeSlam {
   /** Makes the graph's poses and loops the latest optimisation (under m_mutex). */
   void publish();
   void stopWorker();
+  /** Rethrows, in the tracking thread, what the worker failed with. */
+  void rethrowWorkerFailure();
 
   SlamParams m_params;
   OdometryParams m_odometry;
@@ -100,6 +104,7 @@ class KeyframeSlam {
   std::condition_variable m_wake, m_idle;
   std::deque<Job> m_queue;
   bool m_busy = false, m_stop = false;
+  std::exception_ptr m_failed;  //!< what the worker threw, rethrown by add() and flush()
   std::vector<mrpt::poses::CPose3D> m_optimized;  //!< node poses of the latest optimisation
   std::vector<PoseGraphEdge> m_loops;             //!< its loop edges that hold (keyframe ids)
   std::size_t m_optimizations = 0;

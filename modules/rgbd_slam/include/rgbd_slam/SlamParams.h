@@ -6,7 +6,7 @@
 namespace hrgbd {
 
 struct SlamParams : public Params<SlamParams> {
-  bool enabled = false;    //!< false: the odometry alone, exactly as without this section
+  bool enabled = true;     //!< false: the odometry alone, exactly as the tracker gives it
   bool background = true;  //!< loop search and optimisation in a thread beside the tracking
   /** [m] keyframes whose estimated position is within this distance of a new keyframe ... */
   double loop_search_radius = 0.6;
