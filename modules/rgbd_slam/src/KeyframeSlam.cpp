@@ -73,10 +73,13 @@ void KeyframeSlam::rethrowWorkerFailure() {
 bool KeyframeSlam::add(FrameResult& r, RgbdOdometry& tracker) {
   rethrowWorkerFailure();
   if (r.keyframe && r.registered() && tracker.keyframe()) {
-    Job job{m_tracker_kf.size(), std::make_shared<Frame>(*tracker.keyframe()), std::nullopt,
-            r.pose};
+    Job job;
+    job.id = m_tracker_kf.size();
+    job.frame = std::make_shared<Frame>(*tracker.keyframe());
     job.frame->guess.reset();
-    if (!m_tracker_kf.empty())
+    job.pose = r.pose;
+    job.first = m_tracker_kf.empty();
+    if (!job.first)
       job.odometry = PoseGraphEdge{m_tracker_kf.size() - 1, m_tracker_kf.size(),
                                    (-m_tracker_kf.back()) + r.pose,
                                    fitInformation(m_params, r.inliers, false), false};
@@ -145,9 +148,9 @@ void KeyframeSlam::work() {
 void KeyframeSlam::process(Job job) {
   const std::size_t id = job.id;
   m_keyframes.push_back(std::move(job.frame));
-  if (job.odometry) {
-    m_graph.addNode(m_graph.pose(job.odometry->from) + job.odometry->relative);
-    m_graph.addEdge(*job.odometry);
+  if (!job.first) {
+    m_graph.addNode(m_graph.pose(job.odometry.from) + job.odometry.relative);
+    m_graph.addEdge(job.odometry);
   } else {
     m_graph.addNode(job.pose);
   }
@@ -166,7 +169,7 @@ void KeyframeSlam::process(Job job) {
   m_stats.keyframes = m_graph.nodes();
   m_stats.candidates += verified;
   m_stats.loops_accepted += accepted;
-  m_stats.search_ms.push_back(search_ms);
+  if (verified > 0) m_stats.search_ms.push_back(search_ms);
   if (opt) {
     m_stats.loops_dropped += opt->dropped.size();
     m_stats.optimize_ms.push_back(opt->ms);

@@ -34,7 +34,8 @@ struct SlamStats {
   std::size_t loops_accepted = 0;  //!< passed verification and became loop edges
   std::size_t loops_dropped = 0;   //!< loop edges dropped as inconsistent by the optimisation
   std::size_t optimizations = 0;
-  std::vector<double> search_ms;    //!< [ms] loop search and verification, per keyframe
+  std::vector<double> search_ms;    //!< [ms] loop search and verification, per keyframe with
+                                    //!< candidates
   std::vector<double> optimize_ms;  //!< [ms] per optimisation
 };
 
@@ -69,10 +70,11 @@ class KeyframeSlam {
 
  private:
   struct Job {
-    std::size_t id;
+    std::size_t id = 0;
     std::shared_ptr<Frame> frame;
-    std::optional<PoseGraphEdge> odometry;  //!< from the previous keyframe
-    mrpt::poses::CPose3D pose;              //!< tracker's estimate (the first node only)
+    bool first = true;          //!< the first keyframe: no odometry edge
+    PoseGraphEdge odometry;     //!< from the previous keyframe
+    mrpt::poses::CPose3D pose;  //!< tracker's estimate (the first node only)
   };
   struct Place {
     std::size_t keyframe;
