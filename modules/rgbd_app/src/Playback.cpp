@@ -38,18 +38,7 @@ PlaybackJob resolveJob(const PlaybackOptions& opt) {
   if (!opt.ini_outputs) pb.csv.clear(), pb.outputs = {};
   job.odometry.loadFromConfigFile(*job.cfg, "Odometry");
   if (!opt.method.empty()) job.odometry.method = parseMethod(opt.method);
-  job.slam.loadFromConfigFile(*job.cfg, "Slam");
-  if (opt.slam && opt.no_slam) throw UsageError("--slam and --no-slam together");
-  if (opt.slam) job.slam.enabled = true;
-  if (opt.no_slam) job.slam.enabled = false;
-  // the SLAM mode verifies loops with the product's registration: the baselines and peers run
-  // as published (an explicit --slam with one of them is a usage error)
-  if (job.slam.enabled && !isProductMethod(job.odometry.method)) {
-    if (opt.slam)
-      throw UsageError(std::string("--slam needs method hybrid, rgb_only or depth_only, not ") +
-                       toString(job.odometry.method));
-    job.slam.enabled = false;
-  }
+  job.slam = loadSlamParams(*job.cfg, job.odometry.method, opt.slam, opt.no_slam);
   auto pick = [](const std::string& cli, const std::string& ini) {
     return cli.empty() ? ini : cli;
   };

@@ -12,7 +12,7 @@
 namespace hrgbd {
 
 TrajectorySink::TrajectorySink(const std::string& path, const std::string& comment)
-    : m_file(std::make_unique<StreamOutput>(path, "trajectory")), m_path(path), m_comment(comment) {
+    : m_file(std::make_unique<StreamOutput>(path, "trajectory")), m_comment(comment) {
   m_file->stream() << comment << "\n";
   m_file->flush();
 }
@@ -28,9 +28,10 @@ void TrajectorySink::add(const mrpt::obs::CObservation3DRangeScan& obs, const Fr
 void TrajectorySink::finish(std::ostream& log) {
   if (!m_file) return;
   if (m_corrected) {
+    const std::string path = m_file->path();
     m_file.reset();  // the lines written as the frames came are replaced in full
-    save(m_path, m_comment);
-    log << "trajectory (SLAM, optimised): " << m_path << "\n";
+    save(path, m_comment);
+    log << "trajectory (SLAM, optimised): " << path << "\n";
     return;
   }
   m_file->commit();

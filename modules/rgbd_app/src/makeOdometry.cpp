@@ -12,4 +12,19 @@ std::unique_ptr<RgbdOdometry> makeOdometry(const OdometryParams& params,
   return std::make_unique<RgbdOdometry>(params, makeAnyRegistration(params, baselines));
 }
 
+SlamParams loadSlamParams(const mrpt::config::CConfigFileBase& cfg, Method method, bool on,
+                          bool off) {
+  if (on && off) throw UsageError("--slam and --no-slam together");
+  SlamParams slam;
+  slam.loadFromConfigFile(cfg, "Slam");
+  if (on || off) slam.enabled = on;
+  if (slam.enabled && !isProductMethod(method)) {
+    if (on)
+      throw UsageError(std::string("--slam needs method hybrid, rgb_only or depth_only, not ") +
+                       toString(method));
+    slam.enabled = false;
+  }
+  return slam;
+}
+
 }  // namespace hrgbd

@@ -9,7 +9,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -267,9 +266,6 @@ RelativeCheck checkRelativePoses(const Trajectory& gt, const std::vector<Relativ
     const mrpt::poses::CPose3D err = (-((-a->pose) + b->pose)) + r.relative;
     const double angle =
         mrpt::RAD2DEG(Eigen::AngleAxisd(err.getRotationMatrix().asEigen()).angle());
-    if (std::getenv("HRGBD_DEBUG_LOOPS"))
-      std::fprintf(stderr, "loop %.3f %.3f baseline %.3f m err %.4f m %.3f deg\n", r.t_from, r.t_to,
-                   r.relative.norm(), err.norm(), angle);
     ++out.checked;
     out.largest_translation = std::max(out.largest_translation, err.norm());
     out.largest_rotation = std::max(out.largest_rotation, angle);

@@ -100,19 +100,7 @@ void runLive(const LiveOptions& opt, std::ostream& log) {
   params.loadFromConfigFile(*cfg, "Odometry");
   MapParams map_params;
   map_params.loadFromConfigFile(*cfg, "Map");
-  SlamParams slam;
-  slam.loadFromConfigFile(*cfg, "Slam");
-  if (opt.slam && opt.no_slam) throw UsageError("--slam and --no-slam together");
-  if (opt.slam) slam.enabled = true;
-  if (opt.no_slam) slam.enabled = false;
-  // the SLAM mode verifies loops with the product's registration (the baselines and peers run as
-  // published)
-  if (slam.enabled && !isProductMethod(params.method)) {
-    if (opt.slam)
-      throw UsageError(std::string("--slam needs method hybrid, rgb_only or depth_only, not ") +
-                       toString(params.method));
-    slam.enabled = false;
-  }
+  const SlamParams slam = loadSlamParams(*cfg, params.method, opt.slam, opt.no_slam);
   auto odometry = makeOdometry(params, *cfg);
   auto source = openFrameSource(opt.input, *cfg);  // throws "no OpenNI2 sensor ..." clearly
   auto inputs = source->inputs();

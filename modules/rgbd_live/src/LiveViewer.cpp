@@ -74,17 +74,21 @@ void LiveViewer::status(const std::string& text) {
   m_win->repaint();
 }
 
-void LiveViewer::snap(const ColouredMap& map, const std::vector<mrpt::poses::CPose3D>& path,
-                      const std::vector<std::pair<std::size_t, std::size_t>>& loops) {
-  auto& scene = m_win->get3DSceneAndLock();
-  m_cloud->clear();
-  m_shown = 0;
+void LiveViewer::showNewPoints(const ColouredMap& map) {
   const auto& pts = map.points();
   for (; m_shown < pts.size(); ++m_shown) {
     float x, y, z, cr, cg, cb;
     pts.getPointRGB(m_shown, x, y, z, cr, cg, cb);
     m_cloud->push_back(x, y, z, cr, cg, cb);
   }
+}
+
+void LiveViewer::snap(const ColouredMap& map, const std::vector<mrpt::poses::CPose3D>& path,
+                      const std::vector<std::pair<std::size_t, std::size_t>>& loops) {
+  auto& scene = m_win->get3DSceneAndLock();
+  m_cloud->clear();
+  m_shown = 0;
+  showNewPoints(map);
   m_path->clear();
   for (std::size_t i = 1; i < path.size(); ++i)
     m_path->appendLine(path[i - 1].x(), path[i - 1].y(), path[i - 1].z(), path[i].x(), path[i].y(),
@@ -126,11 +130,7 @@ void LiveViewer::update(const mrpt::obs::CObservation3DRangeScan& obs, const Fra
   scene->getViewport("image")->setImageView(mrpt::img::CImage(img, mrpt::img::DEEP_COPY));
   const auto& pts = map.points();
   if (pts.size() < m_shown) m_cloud->clear(), m_shown = 0;
-  for (; m_shown < pts.size(); ++m_shown) {
-    float x, y, z, cr, cg, cb;
-    pts.getPointRGB(m_shown, x, y, z, cr, cg, cb);
-    m_cloud->push_back(x, y, z, cr, cg, cb);
-  }
+  showNewPoints(map);
   if (path.size() >= 2) {
     const auto &a = path[path.size() - 2], &b = path.back();
     m_path->appendLine(a.x(), a.y(), a.z(), b.x(), b.y(), b.z());

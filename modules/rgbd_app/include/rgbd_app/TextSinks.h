@@ -44,7 +44,7 @@ class TrajectorySink : public FrameSink {
 
  private:
   std::unique_ptr<StreamOutput> m_file;
-  std::string m_path, m_comment;
+  std::string m_comment;  //!< the first line, kept to write the file anew after correct()
   bool m_corrected = false;
   Trajectory m_trajectory;
   std::vector<std::string> m_times;  //!< formatFrameTime() of each pose in m_trajectory

@@ -1,12 +1,14 @@
 #pragma once
 /** \file makeOdometry.h
- * The one place where the apps (playback, live, benchmark) construct their odometry. */
+ * The one place where the apps (playback, live, benchmark) construct their odometry and resolve
+ * the SLAM mode. */
 #include <mrpt/config/CConfigFileBase.h>
 
 #include <memory>
 
 #include "rgbd_odometry/OdometryParams.h"
 #include "rgbd_odometry/RgbdOdometry.h"
+#include "rgbd_slam/SlamParams.h"
 
 namespace hrgbd {
 
@@ -15,5 +17,12 @@ namespace hrgbd {
  * (strictly: bad values are ConfigErrors). */
 std::unique_ptr<RgbdOdometry> makeOdometry(const OdometryParams& params,
                                            const mrpt::config::CConfigFileBase& cfg);
+
+/** [Slam] from `cfg`, with the command line's --slam (`on`) and --no-slam (`off`) over its
+ * `enabled`. Off for a baseline or peer `method`: loops are verified with the product's
+ * registration, and those run as published. Throws UsageError for both switches, or for --slam
+ * with a baseline or peer. */
+SlamParams loadSlamParams(const mrpt::config::CConfigFileBase& cfg, Method method, bool on,
+                          bool off);
 
 }  // namespace hrgbd

@@ -36,6 +36,9 @@ class LiveViewer {
   void clear();
 
  private:
+  /** Adds the map's points beyond the m_shown already in the cloud (scene locked by the caller). */
+  void showNewPoints(const ColouredMap& map);
+
   mrpt::gui::CDisplayWindow3D::Ptr m_win;
   mrpt::opengl::CPointCloudColoured::Ptr m_cloud;
   mrpt::opengl::CSetOfLines::Ptr m_path;
