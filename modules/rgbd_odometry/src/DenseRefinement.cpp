@@ -13,17 +13,24 @@ namespace {
 using Vector6d = Eigen::Matrix<double, 6, 1>;
 using Matrix6d = Eigen::Matrix<double, 6, 6>;
 
-// Bilinear sample of a CV_32F image at (u, v), inside [0, cols - 1) x [0, rows - 1). Taken in
-// double and clamped: u = 638.99999999 rounded to float is 639, one past the last 2x2 cell
+// Bilinear sampling at (u, v), inside [0, cols - 1) x [0, rows - 1), of images of one size:
+// the cell and weights are found once for the intensity and both gradients. Taken in double and
+// clamped: u = 638.99999999 rounded to float is 639, one past the last 2x2 cell
 // (AddressSanitizer found it).
-float bilinear(const cv::Mat& m, double u, double v) {
-  const int u0 = std::min(static_cast<int>(u), m.cols - 2),
-            v0 = std::min(static_cast<int>(v), m.rows - 2);
-  const float a = static_cast<float>(u - u0), b = static_cast<float>(v - v0);
-  const float* r0 = m.ptr<float>(v0) + u0;
-  const float* r1 = m.ptr<float>(v0 + 1) + u0;
-  return (1 - b) * ((1 - a) * r0[0] + a * r0[1]) + b * ((1 - a) * r1[0] + a * r1[1]);
-}
+struct Bilinear {
+  Bilinear(const cv::Mat& m, double u, double v)
+      : u0(std::min(static_cast<int>(u), m.cols - 2)),
+        v0(std::min(static_cast<int>(v), m.rows - 2)),
+        a(static_cast<float>(u - u0)),
+        b(static_cast<float>(v - v0)) {}
+  float operator()(const cv::Mat& m) const {
+    const float* r0 = m.ptr<float>(v0) + u0;
+    const float* r1 = m.ptr<float>(v0 + 1) + u0;
+    return (1 - b) * ((1 - a) * r0[0] + a * r0[1]) + b * ((1 - a) * r1[0] + a * r1[1]);
+  }
+  int u0, v0;
+  float a, b;
+};
 
 // Jacobian of a residual whose derivative with respect to the moved point P is g, for a left
 // perturbation exp(delta) T with delta = (translation, rotation).
@@ -72,7 +79,7 @@ class LevelSolver {
     std::vector<float> a;
     a.reserve(m_points.size());
     forEachPair(T, [&](const Eigen::Vector3d&, double u, double v, int, int, float, float grey) {
-      a.push_back(std::abs(bilinear(m_ref.grey, u, v) - grey));
+      a.push_back(std::abs(Bilinear(m_ref.grey, u, v)(m_ref.grey) - grey));
     });
     if (a.empty()) return 1;
     std::nth_element(a.begin(), a.begin() + a.size() / 2, a.end());
@@ -86,8 +93,12 @@ class LevelSolver {
     auto add = [&](const Vector6d& J, double r, double sigma, double weight) {
       const double e = std::abs(r) / sigma;
       const double w = weight * (e <= k ? 1 : k / e) / (sigma * sigma);
-      n.H.noalias() += (w * J) * J.transpose();
-      n.b.noalias() += (w * r) * J;
+      // the lower triangle only (H is symmetric; completed below)
+      for (int j = 0; j < 6; ++j) {
+        const double wj = w * J[j];
+        for (int i = j; i < 6; ++i) n.H(i, j) += wj * J[i];
+        n.b[j] += wj * r;
+      }
       const double rho = e <= k ? 0.5 * e * e : k * (e - 0.5 * k);
       n.cost += weight * rho;
       n.score += std::min(rho, cap);
@@ -96,13 +107,13 @@ class LevelSolver {
     forEachPair(
         T, [&](const Eigen::Vector3d& P, double u, double v, int ui, int vi, float zr, float grey) {
           if (m_p.photometric_weight > 0) {
-            const double gx = bilinear(m_ref.gx, u, v), gy = bilinear(m_ref.gy, u, v);
+            const Bilinear at(m_ref.grey, u, v);
+            const double gx = at(m_ref.gx), gy = at(m_ref.gy);
             if (gx * gx + gy * gy >= m_p.min_gradient * m_p.min_gradient) {
               const double iz = 1 / P.z();
               const Eigen::Vector3d g(gx * c.fx * iz, gy * c.fy * iz,
                                       -(gx * c.fx * P.x() + gy * c.fy * P.y()) * iz * iz);
-              add(jacobian(P, g), bilinear(m_ref.grey, u, v) - grey, photo_sigma,
-                  m_p.photometric_weight);
+              add(jacobian(P, g), at(m_ref.grey) - grey, photo_sigma, m_p.photometric_weight);
               ++n.photometric;
             }
           }
