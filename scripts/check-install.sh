@@ -8,7 +8,7 @@ cd "$(dirname "$0")/.."
 BUILD_DIR=${BUILD_DIR:-build}
 RAWLOG=rawlogs/desk_near.rawlog
 FRAMES=20  # frames in $RAWLOG
-APPS="hybrid-rgbd-odometry rgbd-eval tum2rawlog rgbd-simulate rgbd-benchmark rgbd-live"
+APPS="hybrid-rgbd-odometry rgbd-eval tum2rawlog rgbd-simulate rgbd-benchmark rgbd-live rgbd-vocabulary"
 
 fail() {
   echo "check-install: $*" >&2
@@ -24,6 +24,7 @@ for app in $APPS; do
   [ -x "$prefix/bin/$app" ] || fail "bin/$app not installed"
 done
 [ -f "$prefix/share/hrgbd/config.ini" ] || fail "share/hrgbd/config.ini not installed"
+[ -f "$prefix/share/hrgbd/orb_vocabulary.txt" ] || fail "share/hrgbd/orb_vocabulary.txt not installed"
 # The package must not point back into the source or build tree.
 if grep -rqF "$PWD" "$prefix/lib/cmake/hrgbd"; then
   fail "lib/cmake/hrgbd refers to $PWD"

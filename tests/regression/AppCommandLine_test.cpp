@@ -1,4 +1,4 @@
-// The six apps' command lines, run as the user runs them: --help and --version print and exit 0
+// The seven apps' command lines, run as the user runs them: --help and --version print and exit 0
 // without running the job; a refused command line exits 2 with "<app>: error:" and writes no
 // output file; a runtime error exits 1. Each refusal has a control: the same command line with a
 // valid value runs and writes its output, so "no file" means "nothing ran".
@@ -44,7 +44,8 @@ TEST_P(EveryApp, UnknownOptionIsRefused) {
 
 INSTANTIATE_TEST_SUITE_P(Apps, EveryApp,
                          ::testing::Values("hybrid-rgbd-odometry", "rgbd-benchmark", "rgbd-eval",
-                                           "rgbd-live", "rgbd-simulate", "tum2rawlog"),
+                                           "rgbd-live", "rgbd-simulate", "tum2rawlog",
+                                           "rgbd-vocabulary"),
                          [](const auto& test) {
                            std::string n = test.param;
                            for (auto& c : n)
@@ -199,3 +200,29 @@ TEST(BenchmarkCli, MissingConfigIsARuntimeError) {
 }
 
 }  // namespace
+
+TEST(VocabularyCli, RefusedCommandLinesAndTooLittleDataWriteNoVocabulary) {
+  const fs::path dir = hrgbd::test::tempDir("cli_vocabulary");
+  const auto out = (dir / "v.txt").string();
+  const auto rawlog = kSource + "/rawlogs/desk_near.rawlog";
+  for (const std::string bad : {"--words 1", "--words x", "--every 0", "--every -2", ""})
+    expectRefused("rgbd-vocabulary", "-o " + out + " " + bad + (bad.empty() ? "" : " " + rawlog));
+  expectRefused("rgbd-vocabulary", rawlog);  // no output
+  const auto few = runApp("rgbd-vocabulary", "-q --words 100000 -o " + out + " " + rawlog);
+  EXPECT_EQ(few.code, 1) << few.err;
+  EXPECT_NE(few.err.find("too few descriptors for 100000 words"), std::string::npos) << few.err;
+  const auto missing = runApp("rgbd-vocabulary", "-q -o " + out + " " + (dir / "nope").string());
+  EXPECT_EQ(missing.code, 1) << missing.err;
+  EXPECT_NE(missing.err.find("nope"), std::string::npos) << missing.err;
+  EXPECT_FALSE(fs::exists(out));
+  // control: 50 words from every 2nd frame of the bundled rawlog
+  const auto ok = runApp("rgbd-vocabulary", "-q --words 50 --every 2 -o " + out + " " + rawlog);
+  ASSERT_EQ(ok.code, 0) << ok.err;
+  std::ifstream in(out);
+  std::string header;
+  std::getline(in, header);
+  EXPECT_EQ(header, "HRGBD_ORB_VOCABULARY 1 50");
+  std::size_t words = 0;
+  for (std::string l; std::getline(in, l);) words += l.size() > 64;
+  EXPECT_EQ(words, 50u);
+}

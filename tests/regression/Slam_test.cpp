@@ -113,9 +113,10 @@ TEST(Slam, SimulatedRevisitClosesCorrectLoops) {
 }
 
 TEST(Slam, WithoutLoopsItIsTheOdometry) {
-  // the SLAM mode with its loop search off: a chain of keyframes, frames following them
+  // the SLAM mode with its loop search off (by position and by appearance): a chain of keyframes,
+  // frames following them
   const std::string ini = runs().dir + "/no_loops.ini";
-  std::ofstream(ini) << "[Slam]\nloop_max_candidates = 0\n";
+  std::ofstream(ini) << "[Slam]\nloop_max_candidates = 0\nloop_appearance_candidates = 0\n";
   auto o = options("odometry", false);
   o.config = ini;
   std::ostringstream log;
@@ -130,4 +131,25 @@ TEST(Slam, WithoutLoopsItIsTheOdometry) {
     EXPECT_LT((slam.results[i].pose.asVectorVal() - odometry.results[i].pose.asVectorVal()).norm(),
               1e-4)  // OpenCV's threaded sums vary the tracking itself by ~1e-5 between runs
         << "frame " << i;
+}
+
+TEST(Slam, AppearanceFindsLoopsWhereThePositionSearchDoesNot) {
+  // a search window of 1 mm: no keyframe is near enough by position, as after a long drift; the
+  // bundled vocabulary finds the revisited views, and their loops are right
+  const std::string ini = runs().dir + "/appearance.ini";
+  std::ofstream(ini) << "[Slam]\nloop_search_radius = 0.001\n";
+  auto o = options("appearance", true);
+  o.config = ini;
+  std::ostringstream log;
+  const auto s = hrgbd::runPlayback(o, log);
+  EXPECT_GE(s.slam_stats.appearance_loops, 2u) << log.str();
+  EXPECT_EQ(s.slam_stats.appearance_loops, s.slam_stats.loops_accepted) << log.str();
+  ASSERT_GE(s.loop_check.checked, 2u) << log.str();
+  EXPECT_LT(s.loop_check.largest_translation, 0.03) << log.str();
+  EXPECT_LT(s.loop_check.largest_rotation, 2.0) << log.str();
+  // without a vocabulary, nothing
+  std::ofstream(ini) << "[Slam]\nloop_search_radius = 0.001\nvocabulary =\n";
+  const auto none = hrgbd::runPlayback(o, log);
+  EXPECT_EQ(none.slam_stats.loops_accepted, 0u);
+  EXPECT_EQ(none.slam_stats.candidates, 0u);
 }

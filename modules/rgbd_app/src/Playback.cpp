@@ -33,12 +33,13 @@ PlaybackJob resolveJob(const PlaybackOptions& opt) {
   PlaybackJob job;
   job.cfg = loadChecked(opt.config);
   PlaybackSection pb;
-  pb.load(*job.cfg,
-          opt.config.empty() ? "." : std::filesystem::path(opt.config).parent_path().string());
+  const std::string base =
+      opt.config.empty() ? "." : std::filesystem::path(opt.config).parent_path().string();
+  pb.load(*job.cfg, base);
   if (!opt.ini_outputs) pb.csv.clear(), pb.outputs = {};
   job.odometry.loadFromConfigFile(*job.cfg, "Odometry");
   if (!opt.method.empty()) job.odometry.method = parseMethod(opt.method);
-  job.slam = loadSlamParams(*job.cfg, job.odometry.method, opt.slam, opt.no_slam);
+  job.slam = loadSlamParams(*job.cfg, base, job.odometry.method, opt.slam, opt.no_slam);
   auto pick = [](const std::string& cli, const std::string& ini) {
     return cli.empty() ? ini : cli;
   };

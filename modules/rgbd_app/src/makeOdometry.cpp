@@ -12,11 +12,12 @@ std::unique_ptr<RgbdOdometry> makeOdometry(const OdometryParams& params,
   return std::make_unique<RgbdOdometry>(params, makeAnyRegistration(params, baselines));
 }
 
-SlamParams loadSlamParams(const mrpt::config::CConfigFileBase& cfg, Method method, bool on,
-                          bool off) {
+SlamParams loadSlamParams(const mrpt::config::CConfigFileBase& cfg, const std::string& base,
+                          Method method, bool on, bool off) {
   if (on && off) throw UsageError("--slam and --no-slam together");
   SlamParams slam;
   slam.loadFromConfigFile(cfg, "Slam");
+  if (slam.vocabulary != "bundled") slam.vocabulary = resolvePath(base, slam.vocabulary);
   if (on || off) slam.enabled = on;
   if (slam.enabled && !isProductMethod(method)) {
     if (on)

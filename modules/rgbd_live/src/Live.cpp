@@ -1,6 +1,7 @@
 #include "rgbd_live/Live.h"
 
 #include <chrono>
+#include <filesystem>
 #include <ostream>
 #include <thread>
 
@@ -100,7 +101,9 @@ void runLive(const LiveOptions& opt, std::ostream& log) {
   params.loadFromConfigFile(*cfg, "Odometry");
   MapParams map_params;
   map_params.loadFromConfigFile(*cfg, "Map");
-  const SlamParams slam = loadSlamParams(*cfg, params.method, opt.slam, opt.no_slam);
+  const SlamParams slam =
+      loadSlamParams(*cfg, std::filesystem::path(opt.config).parent_path().string(), params.method,
+                     opt.slam, opt.no_slam);
   auto odometry = makeOdometry(params, *cfg);
   auto source = openFrameSource(opt.input, *cfg);  // throws "no OpenNI2 sensor ..." clearly
   auto inputs = source->inputs();

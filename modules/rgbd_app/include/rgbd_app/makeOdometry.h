@@ -21,8 +21,8 @@ std::unique_ptr<RgbdOdometry> makeOdometry(const OdometryParams& params,
 /** [Slam] from `cfg`, with the command line's --slam (`on`) and --no-slam (`off`) over its
  * `enabled`. Off for a baseline or peer `method`: loops are verified with the product's
  * registration, and those run as published. Throws UsageError for both switches, or for --slam
- * with a baseline or peer. */
-SlamParams loadSlamParams(const mrpt::config::CConfigFileBase& cfg, Method method, bool on,
-                          bool off);
+ * with a baseline or peer. Its `vocabulary` is resolved against `base`, the INI file's folder. */
+SlamParams loadSlamParams(const mrpt::config::CConfigFileBase& cfg, const std::string& base,
+                          Method method, bool on, bool off);
 
 }  // namespace hrgbd

@@ -4,10 +4,12 @@
  * graph, linked to the previous keyframe by the tracker's registration. Each new keyframe looks
  * for loops among the keyframes near its estimated pose; every candidate goes through the
  * tracking's own registration (sparse MSSE, then the dense refinement), must register on enough
- * inliers and land near where the graph puts it, and becomes a loop edge. The graph is optimised
- * after each accepted loop, with inconsistent loops dropped (PoseGraph). The loop search and the
- * optimisation run in a background thread (`background`), and the tracker is moved onto the
- * optimised poses when one finishes. Frames between keyframes follow their keyframe. */
+ * inliers and land near where the graph puts it (allowing for the drift over the path between
+ * them), and becomes a loop edge. With a vocabulary, the older keyframes that look most alike
+ * (bag of binary words, Vocabulary.h) are candidates too, wherever the graph puts them. The graph
+ * is optimised after each accepted loop, with inconsistent loops dropped (PoseGraph). The loop
+ * search and the optimisation run in a background thread (`background`), and the tracker is moved
+ * onto the optimised poses when one finishes. Frames between keyframes follow their keyframe. */
 #include <condition_variable>
 #include <cstddef>
 #include <deque>
@@ -24,15 +26,18 @@
 #include "rgbd_slam/PoseGraph.h"
 #include "rgbd_slam/SlamParams.h"
 #include "rgbd_slam/SlamPoses.h"
+#include "rgbd_slam/Vocabulary.h"
 
 namespace hrgbd {
 
 /** What the SLAM mode did so far. */
 struct SlamStats {
   std::size_t keyframes = 0;
-  std::size_t candidates = 0;      //!< loop candidates verified
-  std::size_t loops_accepted = 0;  //!< passed verification and became loop edges
-  std::size_t loops_dropped = 0;   //!< loop edges dropped as inconsistent by the optimisation
+  std::size_t candidates = 0;        //!< loop candidates verified
+  std::size_t by_appearance = 0;     //!< of them: found by appearance only (not by position)
+  std::size_t loops_accepted = 0;    //!< passed verification and became loop edges
+  std::size_t appearance_loops = 0;  //!< of them: candidates by appearance only
+  std::size_t loops_dropped = 0;     //!< loop edges dropped as inconsistent by the optimisation
   std::size_t optimizations = 0;
   std::vector<double> search_ms;    //!< [ms] loop search and verification, per keyframe with
                                     //!< candidates
@@ -45,7 +50,8 @@ std::string toText(const SlamStats& s);
 class KeyframeSlam {
  public:
   /** Loop candidates are verified with makeRegistration(`odometry`): the product's methods only
-   * (throws ConfigError for a baseline or peer). */
+   * (throws ConfigError for a baseline or peer). Loads `params.vocabulary` (ConfigError naming
+   * the key and the fault). */
   KeyframeSlam(const SlamParams& params, const OdometryParams& odometry);
   ~KeyframeSlam();
   KeyframeSlam(const KeyframeSlam&) = delete;
@@ -82,7 +88,13 @@ class KeyframeSlam {
   };
   void work();
   void process(Job job);
-  std::vector<std::size_t> candidates(std::size_t id) const;
+  struct Candidate {
+    std::size_t keyframe;
+    bool by_appearance;  //!< not near enough by position
+  };
+  std::vector<Candidate> candidates(std::size_t id) const;
+  /** Older keyframes that look like keyframe `id`, most alike first. */
+  std::vector<std::size_t> alike(std::size_t id) const;
   std::optional<PoseGraphEdge> verify(std::size_t id, std::size_t candidate);
   void applyOptimization(RgbdOdometry& tracker);
   /** Makes the graph's poses and loops the latest optimisation (under m_mutex). */
@@ -101,6 +113,9 @@ class KeyframeSlam {
   // worker (the graph, the keyframes and the registration); m_mutex guards what both touch
   std::unique_ptr<Registration> m_registration;
   std::vector<std::shared_ptr<Frame>> m_keyframes;
+  std::optional<Vocabulary> m_vocabulary;
+  std::vector<BowVector> m_words;  //!< per keyframe (empty without ORB features)
+  std::vector<double> m_path;      //!< [m] per keyframe: path from the first (+ 1.5 m x angle)
   PoseGraph m_graph;
   mutable std::mutex m_mutex;
   std::condition_variable m_wake, m_idle;

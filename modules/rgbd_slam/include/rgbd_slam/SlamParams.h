@@ -1,6 +1,8 @@
 #pragma once
 /** \file SlamParams.h
  * Parameters of the SLAM mode. INI section [Slam]. */
+#include <string>
+
 #include "rgbd_core/Params.h"
 
 namespace hrgbd {
@@ -40,6 +42,20 @@ struct SlamParams : public Params<SlamParams> {
    * teddy 0.0087 / 0.0098 / 0.0116 m (the simulated 32 s loop: 0.0089 / 0.0075 / 0.0060). */
   double loop_geometric_weight = 1;
   int optimizer_iterations = 100;  //!< [count] Levenberg-Marquardt iterations per optimisation
+  /** ORB vocabulary file (rgbd-vocabulary) for loop candidates by appearance, relative to the
+   * INI file's folder; "bundled": the one shipped (bundledVocabulary()), made from the shared
+   * real TUM frames; empty: candidates by position only */
+  std::string vocabulary = "bundled";
+  /** [count] candidates by appearance verified per keyframe, besides those by position: the
+   * older keyframes that look most alike (bag-of-words score) ... */
+  int loop_appearance_candidates = 2;
+  /** ... with a score at least this fraction of the score between the keyframe and the one
+   * before it (DBoW2's normalised score) */
+  double loop_min_appearance = 0.5;
+  /** [m/m] odometry drift allowed for: a verified loop may be loop_max_discrepancy plus this
+   * times the path between the two keyframes from where the graph puts it (rotation: the same
+   * over a 1.5 m lever arm) */
+  double loop_drift = 0.05;
 
   template <class P, class V>
   static void declare(P& p, V& v) {
@@ -64,6 +80,13 @@ struct SlamParams : public Params<SlamParams> {
     HRGBD_PARAM(loop_geometric_weight, "[Dense] geometric_weight of loop registrations",
                 Range::atLeast(0));
     HRGBD_PARAM(optimizer_iterations, "[count] Levenberg-Marquardt iterations", Range::atLeast(1));
+    HRGBD_PARAM(vocabulary, "ORB vocabulary file (bundled|FILE|empty: none) for loop candidates");
+    HRGBD_PARAM(loop_appearance_candidates, "[count] candidates by appearance per keyframe",
+                Range::atLeast(0));
+    HRGBD_PARAM(loop_min_appearance, "appearance score needed, as a fraction of the previous's",
+                Range::above(0));
+    HRGBD_PARAM(loop_drift, "[m/m] drift allowed for over the path between loop keyframes",
+                Range::atLeast(0));
   }
 };
 

@@ -1,0 +1,76 @@
+// rgbd-vocabulary -o VOCABULARY.txt INPUT...: builds the bag of binary words the SLAM mode finds
+// loop candidates with ([Slam] vocabulary), from the ORB features ([ORB] of --config) of every
+// --every-th frame of the inputs (TUM folders, rawlogs, .oni files).
+#include <mrpt/config/CConfigFileMemory.h>
+#include <unistd.h>
+
+#include <iostream>
+#include <stdexcept>
+#include <vector>
+
+#include "rgbd_cli/CommandLine.h"
+#include "rgbd_core/Config.h"
+#include "rgbd_core/JobPaths.h"
+#include "rgbd_core/Progress.h"
+#include "rgbd_core/RgbdImage.h"
+#include "rgbd_io/openFrameSource.h"
+#include "rgbd_odometry/OrbFeatures.h"
+#include "rgbd_slam/Vocabulary.h"
+
+int main(int argc, char** argv) {
+  hrgbd::CommandLine cmd("rgbd-vocabulary",
+                         "ORB vocabulary (bag of binary words) for the SLAM mode's loop search");
+  TCLAP::UnlabeledMultiArg<std::string> in("input", "TUM folders, rawlogs or .oni files", true,
+                                           "INPUT", cmd);
+  TCLAP::ValueArg<std::string> out("o", "output", "vocabulary file to write", true, "",
+                                   "VOCABULARY.txt", cmd);
+  TCLAP::ValueArg<std::string> cfg("c", "config", "INI file ([ORB], [TumSource] sections)", false,
+                                   "", "FILE.ini", cmd);
+  TCLAP::ValueArg<int> words("", "words", "number of words (default 1000)", false, 1000, "N", cmd);
+  TCLAP::ValueArg<int> every("", "every", "use every N-th frame (default 5)", false, 5, "N", cmd);
+  TCLAP::SwitchArg quiet("q", "quiet", "no progress line", cmd);
+  return cmd.run(argc, argv, [&] {
+    if (words.getValue() < 2) throw hrgbd::UsageError("--words must be at least 2");
+    if (every.getValue() < 1) throw hrgbd::UsageError("--every must be at least 1");
+    std::unique_ptr<mrpt::config::CConfigFileBase> ini =
+        std::make_unique<mrpt::config::CConfigFileMemory>();
+    if (!cfg.getValue().empty()) ini = hrgbd::loadIniFile(cfg.getValue());
+    hrgbd::OrbParams orb;
+    orb.loadFromConfigFile(*ini, "ORB");
+    std::vector<hrgbd::JobPath> inputs{{cfg.getValue(), "the configuration file (--config)"}};
+    std::vector<std::unique_ptr<hrgbd::FrameSource>> sources;
+    for (const auto& name : in.getValue()) {
+      sources.push_back(hrgbd::openFrameSource(name, *ini));
+      for (const auto& p : sources.back()->inputs()) inputs.push_back(p);
+    }
+    hrgbd::checkJobPaths(inputs, {{out.getValue(), "the vocabulary (--output)", false, true}});
+    cv::Mat descriptors;
+    std::vector<int> image;
+    int images = 0;
+    for (auto& src : sources) {
+      std::cout << src->describe() << "\n";
+      hrgbd::ProgressParams pp;
+      pp.total = src->frameCount();
+      pp.terminal = isatty(STDERR_FILENO);
+      hrgbd::Progress progress(std::cerr, pp);
+      std::size_t n = 0;
+      while (auto obs = src->next()) {
+        if (n++ % static_cast<std::size_t>(every.getValue()) == 0) {
+          const auto f = hrgbd::extractOrbFeatures(hrgbd::prepareRgbdImage(*obs), orb);
+          descriptors.push_back(f.descriptors);
+          image.insert(image.end(), static_cast<std::size_t>(f.descriptors.rows), images++);
+        }
+        if (!quiet.getValue()) progress.update(n);
+      }
+      if (!quiet.getValue()) progress.finish();
+    }
+    std::cout << descriptors.rows << " ORB descriptors from " << images << " frames\n";
+    if (descriptors.rows < words.getValue())
+      throw std::runtime_error("too few descriptors for " + std::to_string(words.getValue()) +
+                               " words: give more frames (--every, inputs) or fewer --words");
+    hrgbd::VocabularyTraining t;
+    t.words = words.getValue();
+    hrgbd::Vocabulary::train(descriptors, image, t).save(out.getValue());
+    std::cout << "wrote " << t.words << " words to " << out.getValue() << "\n";
+  });
+}
