@@ -26,6 +26,9 @@ struct DenseParams : public Params<DenseParams> {
   int iterations = 10;   //!< most Gauss-Newton steps per level
   double photometric_weight = 1;  //!< weight of the intensity term (0 = off)
   double geometric_weight = 1;    //!< weight of the point-to-plane term (0 = off)
+  /** the point-to-plane term at the finest level on every n-th row and column (weighted n^2 to
+   * keep the balance of the terms); 1 = every pixel */
+  int geometric_stride = 2;
   /** [1/m] Kinect depth noise sigma = depth_noise * z^2 (Khoshelham & Elberink 2012: ~1.4e-3). */
   double depth_noise = 0.0015;
   double max_depth = 5.0;  //!< [m] farther depth is not used
@@ -50,6 +53,8 @@ struct DenseParams : public Params<DenseParams> {
     HRGBD_PARAM(iterations, "most Gauss-Newton steps per level", Range::atLeast(1));
     HRGBD_PARAM(photometric_weight, "weight of the intensity term (0 = off)", Range::atLeast(0));
     HRGBD_PARAM(geometric_weight, "weight of the point-to-plane term (0 = off)", Range::atLeast(0));
+    HRGBD_PARAM(geometric_stride, "point-to-plane term on every n-th row and column (finest level)",
+                Range::closed(1, 8));
     HRGBD_PARAM(depth_noise, "[1/m] depth sigma = depth_noise z^2", Range::above(0));
     HRGBD_PARAM(max_depth, "[m] farther depth is not used", Range::above(0));
     HRGBD_PARAM(max_depth_difference, "[m] occlusion gate between warped and reference depth",
