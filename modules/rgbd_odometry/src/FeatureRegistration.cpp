@@ -10,8 +10,10 @@
 namespace hrgbd {
 namespace {
 
-// The geometric features of `f`, computed on first use (a reference keeps them).
+// The geometric features of `f`, computed on first use (a reference keeps them); none when the
+// frame kept no depth image (the SLAM mode's keyframes keep features only).
 const GeometricFeatures& geometricOf(Frame& f, const GeometricParams& p, StageTimes& ms) {
+  if (!f.geometric && f.image.depth.empty()) f.geometric = GeometricFeatures{};
   if (!f.geometric)
     f.geometric = timed(ms.features, [&] { return extractGeometricFeatures(f.image, p); });
   return *f.geometric;

@@ -28,10 +28,25 @@ mrpt::math::CMatrixDouble66 fitInformation(const SlamParams& p, std::size_t inli
   return edgeInformation(sigma, sigma / kLever);
 }
 
-/** The tracking's parameters with the loops' weight of the point-to-plane term. */
+/** The tracking's parameters with the loops' weight of the point-to-plane term, and without the
+ * geometric fallback of a weak photometric registration: a loop needs loop_min_inliers, and the
+ * keyframes then need not keep their images (keptForLoops()). */
 OdometryParams loopRegistration(OdometryParams odometry, const SlamParams& p) {
   odometry.dense.geometric_weight = p.loop_geometric_weight;
+  odometry.geometric_fallback = false;
   return odometry;
+}
+
+/** What the loop search keeps of a prepared keyframe: its features and pyramids. The images
+ * (1.5 of 4.6 MB a keyframe at 640x480) only serve to compute features, and every path the loop
+ * registration takes has its features already: ORB, or IS3D + SHOT for a frame with too few ORB
+ * features (prepared by the tracker's hybrid registration). */
+std::shared_ptr<Frame> keptForLoops(const Frame& keyframe) {
+  auto f = std::make_shared<Frame>(keyframe);
+  f->guess.reset();
+  f->peer.reset();
+  if (f->orb || f->geometric) f->image.grey.release(), f->image.depth.release();
+  return f;
 }
 
 }  // namespace
@@ -83,8 +98,7 @@ bool KeyframeSlam::add(FrameResult& r, RgbdOdometry& tracker) {
   if (r.keyframe && r.registered() && tracker.keyframe()) {
     Job job;
     job.id = m_tracker_kf.size();
-    job.frame = std::make_shared<Frame>(*tracker.keyframe());
-    job.frame->guess.reset();
+    job.frame = keptForLoops(*tracker.keyframe());
     job.pose = r.pose;
     job.first = m_tracker_kf.empty();
     if (!job.first)
@@ -262,10 +276,11 @@ std::vector<std::size_t> KeyframeSlam::alike(std::size_t id) const {
 }
 
 std::optional<PoseGraphEdge> KeyframeSlam::verify(std::size_t id, std::size_t candidate) {
-  Frame cur = *m_keyframes[id];  // the guess is this attempt's own
+  // No guess: a loop is measured by the sparse registration (refined densely), never by a
+  // refinement started from where the graph puts it (such an edge would only repeat the graph;
+  // with the guess as a start, failed sparse fits came back as loops 13 cm off on fr1/rpy).
   const mrpt::poses::CPose3D predicted = (-m_graph.pose(candidate)) + m_graph.pose(id);
-  cur.guess = toIsometry(predicted);
-  const RegistrationResult reg = m_registration->align(cur, *m_keyframes[candidate]);
+  const RegistrationResult reg = m_registration->align(*m_keyframes[id], *m_keyframes[candidate]);
   if (!reg.ok() || reg.inliers < static_cast<std::size_t>(m_params.loop_min_inliers))
     return std::nullopt;
   const mrpt::poses::CPose3D measured = toPose(reg.T);
