@@ -239,6 +239,16 @@ TEST(AppBadInput, IniValuesThatCannotBeServedAndRepeatedKeysNameTheKey) {
   expectFailure(kOdometry, "-c " + ini + " -i x", {ini + "' line 4", "section [ORB]"});
   std::ofstream(ini) << "[Map]\nvoxel_size = 0.02\nvoxel_size = 0.05\n";
   expectFailure(kOdometry, "-c " + ini + " -i x", {ini + "' line 3", "[Map] voxel_size"});
+  // the SLAM mode's vocabulary: missing, a folder, damaged; relative to the INI file's folder
+  const auto rawlog = std::string(HRGBD_SOURCE_DIR) + "/rawlogs/desk_near.rawlog";
+  std::ofstream(ini) << "[Slam]\nvocabulary = missing.txt\n";
+  expectFailure(kOdometry, "-c " + ini + " -i " + rawlog,
+                {"[Slam] vocabulary = " + (dir / "missing.txt").string(), "cannot open"});
+  std::ofstream(ini) << "[Slam]\nvocabulary = .\n";
+  expectFailure(kOdometry, "-c " + ini + " -i " + rawlog, {"[Slam] vocabulary", "is a folder"});
+  std::ofstream((dir / "v.txt").string()) << "HRGBD_ORB_VOCABULARY 1 5\n00 1\n";
+  std::ofstream(ini) << "[Slam]\nvocabulary = v.txt\n";
+  expectFailure(kOdometry, "-c " + ini + " -i " + rawlog, {"v.txt, line 2"});
 }
 
 }  // namespace

@@ -129,6 +129,12 @@ TEST(Vocabulary, FileRoundTripsAndRefusesDamage) {
   EXPECT_NE(message(longer).find("more words"), std::string::npos);
   EXPECT_NE(message({}).find("not a vocabulary"), std::string::npos);
   try {
+    Vocabulary::load(dir);
+    ADD_FAILURE() << "a folder loaded";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("is a folder"), std::string::npos) << e.what();
+  }
+  try {
     Vocabulary::load(dir + "/missing.txt");
     ADD_FAILURE() << "a missing file loaded";
   } catch (const std::runtime_error& e) {

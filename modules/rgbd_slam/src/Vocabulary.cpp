@@ -167,6 +167,9 @@ void Vocabulary::save(const std::string& path) const {
 }
 
 Vocabulary Vocabulary::load(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw std::runtime_error(path + " is a folder, not a vocabulary file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error("cannot open the vocabulary " + path);
   auto fail = [&](std::size_t line, const std::string& why) -> std::runtime_error {
