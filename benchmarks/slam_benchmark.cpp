@@ -1,6 +1,8 @@
 // The SLAM mode's costs beside the tracking: optimising a keyframe graph the size of fr1/rpy's
-// (108 keyframes, ~250 loops) and of a longer run, and verifying one loop candidate (the tracking's
-// registration between two keyframes of the bundled desk sequence, five frames apart).
+// (108 keyframes, ~250 loops) and of a longer run, verifying one loop candidate (the tracking's
+// registration between two keyframes of the bundled desk sequence, five frames apart), and the
+// appearance search: a keyframe's ORB descriptors into words (bundled vocabulary) and its score
+// against N older keyframes.
 #include <benchmark/benchmark.h>
 #include <mrpt/core/bits_math.h>
 
@@ -8,8 +10,10 @@
 
 #include "rgbd_io/RawlogSource.h"
 #include "rgbd_odometry/OdometryParams.h"
+#include "rgbd_odometry/OrbFeatures.h"
 #include "rgbd_odometry/Registration.h"
 #include "rgbd_slam/PoseGraph.h"
+#include "rgbd_slam/Vocabulary.h"
 
 namespace {
 
@@ -76,6 +80,39 @@ void BM_LoopVerification(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_LoopVerification)->Unit(benchmark::kMillisecond);
+
+// ORB descriptors of the bundled rawlog's frames (as the tracker extracts them).
+std::vector<cv::Mat> orbOfBundledFrames() {
+  hrgbd::RawlogSource src(std::string(HRGBD_SOURCE_DIR) + "/rawlogs/desk_near.rawlog");
+  const hrgbd::OdometryParams params;
+  std::vector<cv::Mat> out;
+  while (auto obs = src.next())
+    out.push_back(hrgbd::extractOrbFeatures(hrgbd::prepareRgbdImage(*obs), params.orb).descriptors);
+  return out;
+}
+
+void BM_BowTransform(benchmark::State& state) {
+  const auto v = hrgbd::Vocabulary::load(hrgbd::bundledVocabulary());
+  const auto orb = orbOfBundledFrames();
+  for (auto _ : state) benchmark::DoNotOptimize(v.transform(orb[0]));
+  state.SetLabel(std::to_string(orb[0].rows) + " descriptors, " + std::to_string(v.size()) +
+                 " words");
+}
+BENCHMARK(BM_BowTransform)->Unit(benchmark::kMillisecond);
+
+void BM_AppearanceScores(benchmark::State& state) {
+  const auto v = hrgbd::Vocabulary::load(hrgbd::bundledVocabulary());
+  const auto orb = orbOfBundledFrames();
+  std::vector<hrgbd::BowVector> keyframes;
+  for (int i = 0; i < state.range(0); ++i)
+    keyframes.push_back(v.transform(orb[static_cast<std::size_t>(i) % orb.size()]));
+  for (auto _ : state) {
+    double best = 0;
+    for (const auto& k : keyframes) best = std::max(best, hrgbd::bowScore(keyframes[0], k));
+    benchmark::DoNotOptimize(best);
+  }
+}
+BENCHMARK(BM_AppearanceScores)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 
