@@ -11,6 +11,7 @@
 #include "rgbd_cli/CommandLine.h"
 #include "rgbd_core/Config.h"
 #include "rgbd_core/JobPaths.h"
+#include "rgbd_core/OutputFile.h"
 #include "rgbd_core/Progress.h"
 #include "rgbd_core/RgbdImage.h"
 #include "rgbd_io/openFrameSource.h"
@@ -32,9 +33,11 @@ int main(int argc, char** argv) {
   return cmd.run(argc, argv, [&] {
     if (words.getValue() < 2) throw hrgbd::UsageError("--words must be at least 2");
     if (every.getValue() < 1) throw hrgbd::UsageError("--every must be at least 1");
+    if (out.getValue().empty()) throw hrgbd::UsageError("--output is empty");
     std::unique_ptr<mrpt::config::CConfigFileBase> ini =
         std::make_unique<mrpt::config::CConfigFileMemory>();
     if (!cfg.getValue().empty()) ini = hrgbd::loadIniFile(cfg.getValue());
+    hrgbd::rejectUnknownSections(*ini);
     hrgbd::OrbParams orb;
     orb.loadFromConfigFile(*ini, "ORB");
     std::vector<hrgbd::JobPath> inputs{{cfg.getValue(), "the configuration file (--config)"}};
@@ -44,6 +47,9 @@ int main(int argc, char** argv) {
       for (const auto& p : sources.back()->inputs()) inputs.push_back(p);
     }
     hrgbd::checkJobPaths(inputs, {{out.getValue(), "the vocabulary (--output)", false, true}});
+    // the output is made now (a folder that cannot take it fails before the work) and moved into
+    // place only when complete
+    hrgbd::OutputFile file(out.getValue(), "vocabulary");
     cv::Mat descriptors;
     std::vector<int> image;
     int images = 0;
@@ -70,7 +76,8 @@ int main(int argc, char** argv) {
                                " words: give more frames (--every, inputs) or fewer --words");
     hrgbd::VocabularyTraining t;
     t.words = words.getValue();
-    hrgbd::Vocabulary::train(descriptors, image, t).save(out.getValue());
+    hrgbd::Vocabulary::train(descriptors, image, t).save(file.writePath());
+    file.commit();
     std::cout << "wrote " << t.words << " words to " << out.getValue() << "\n";
   });
 }

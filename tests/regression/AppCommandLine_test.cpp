@@ -205,7 +205,7 @@ TEST(VocabularyCli, RefusedCommandLinesAndTooLittleDataWriteNoVocabulary) {
   const fs::path dir = hrgbd::test::tempDir("cli_vocabulary");
   const auto out = (dir / "v.txt").string();
   const auto rawlog = kSource + "/rawlogs/desk_near.rawlog";
-  for (const std::string bad : {"--words 1", "--words x", "--every 0", "--every -2", ""})
+  for (const std::string bad : {"--words 1", "--words x", "--every 0", "--every -2", "", "-o ''"})
     expectRefused("rgbd-vocabulary", "-o " + out + " " + bad + (bad.empty() ? "" : " " + rawlog));
   expectRefused("rgbd-vocabulary", rawlog);  // no output
   const auto few = runApp("rgbd-vocabulary", "-q --words 100000 -o " + out + " " + rawlog);
@@ -215,14 +215,21 @@ TEST(VocabularyCli, RefusedCommandLinesAndTooLittleDataWriteNoVocabulary) {
   EXPECT_EQ(missing.code, 1) << missing.err;
   EXPECT_NE(missing.err.find("nope"), std::string::npos) << missing.err;
   EXPECT_FALSE(fs::exists(out));
-  // control: 50 words from every 2nd frame of the bundled rawlog
-  const auto ok = runApp("rgbd-vocabulary", "-q --words 50 --every 2 -o " + out + " " + rawlog);
+  // 50 words from 10 frames of one desk: every word is in every frame, and the words cannot tell
+  // the frames apart; refused
+  const auto useless =
+      runApp("rgbd-vocabulary", "-q --words 50 --every 2 -o " + out + " " + rawlog);
+  EXPECT_EQ(useless.code, 1) << useless.err;
+  EXPECT_NE(useless.err.find("every word is in every image"), std::string::npos) << useless.err;
+  EXPECT_FALSE(fs::exists(out));
+  // control: 400 words
+  const auto ok = runApp("rgbd-vocabulary", "-q --words 400 --every 2 -o " + out + " " + rawlog);
   ASSERT_EQ(ok.code, 0) << ok.err;
   std::ifstream in(out);
   std::string header;
   std::getline(in, header);
-  EXPECT_EQ(header, "HRGBD_ORB_VOCABULARY 1 50");
+  EXPECT_EQ(header, "HRGBD_ORB_VOCABULARY 1 400");
   std::size_t words = 0;
   for (std::string l; std::getline(in, l);) words += l.size() > 64;
-  EXPECT_EQ(words, 50u);
+  EXPECT_EQ(words, 400u);
 }

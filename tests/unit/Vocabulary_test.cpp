@@ -37,8 +37,8 @@ cv::Mat planted(int clusters, int per, int flips, std::vector<int>& cluster_of, 
 
 Vocabulary trainedOnPlanted(std::vector<int>& cluster_of, cv::Mat& d) {
   d = planted(8, 60, 20, cluster_of, 7);
-  std::vector<int> image(static_cast<std::size_t>(d.rows));
-  for (std::size_t i = 0; i < image.size(); ++i) image[i] = static_cast<int>(i % 10);
+  std::vector<int> image(static_cast<std::size_t>(d.rows));  // 4 images of 2 clusters each
+  for (std::size_t i = 0; i < image.size(); ++i) image[i] = cluster_of[i] / 2;
   hrgbd::VocabularyTraining t;
   t.words = 8;
   return Vocabulary::train(d, image, t);
@@ -53,11 +53,7 @@ TEST(Vocabulary, KMajorityRecoversPlantedClusters) {
   ASSERT_EQ(v.size(), 8u);
   // one word per cluster: members of a cluster share their word, clusters do not
   std::vector<int> word_of_cluster(8, -1);
-  for (int i = 0; i < d.rows; ++i) {
-    const BowVector w = v.transform(d.row(i));
-    // every image of the training holds every word: idf 0, so a single descriptor weighs nothing
-    EXPECT_TRUE(w.empty());
-  }
+  for (int i = 0; i < d.rows; ++i) EXPECT_EQ(v.transform(d.row(i)).size(), 1u);
   cv::Mat dist, idx;
   cv::batchDistance(d, v.words(), dist, CV_32S, idx, cv::NORM_HAMMING, 1);
   for (int i = 0; i < d.rows; ++i) {
@@ -67,6 +63,33 @@ TEST(Vocabulary, KMajorityRecoversPlantedClusters) {
   }
   std::sort(word_of_cluster.begin(), word_of_cluster.end());
   EXPECT_EQ(std::unique(word_of_cluster.begin(), word_of_cluster.end()), word_of_cluster.end());
+}
+
+TEST(Vocabulary, DataThatCannotMakeAUsefulVocabularyIsRefused) {
+  std::vector<int> cluster_of;
+  const cv::Mat d = planted(8, 60, 20, cluster_of, 5);
+  hrgbd::VocabularyTraining t;
+  t.words = 8;
+  auto message = [&](const cv::Mat& rows, const std::vector<int>& image) {
+    try {
+      Vocabulary::train(rows, image, t);
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("trained");
+  };
+  // one image: no word can weigh more than another
+  EXPECT_NE(message(d, std::vector<int>(480, 0)).find("one image"), std::string::npos);
+  // every word in every image (each image holds all eight clusters)
+  std::vector<int> mixed(480);
+  for (std::size_t i = 0; i < mixed.size(); ++i) mixed[i] = static_cast<int>(i % 10);
+  EXPECT_NE(message(d, mixed).find("every word is in every image"), std::string::npos);
+  // fewer distinct descriptors than words: 480 copies of 4 rows
+  cv::Mat copies;
+  for (int i = 0; i < 120; ++i) copies.push_back(d.rowRange(0, 4));
+  std::vector<int> two(480);
+  for (std::size_t i = 0; i < two.size(); ++i) two[i] = static_cast<int>(i % 2);
+  EXPECT_NE(message(copies, two).find("4 distinct descriptors for 8 words"), std::string::npos);
 }
 
 TEST(Vocabulary, ScoreRanksTheSameImageAboveAnother) {
@@ -123,6 +146,13 @@ TEST(Vocabulary, FileRoundTripsAndRefusesDamage) {
   EXPECT_NE(message(with(3, "zz" + lines[3].substr(2))).find("line 4"), std::string::npos);
   EXPECT_NE(message(with(5, lines[5].substr(1))).find("line 6"), std::string::npos);
   EXPECT_NE(message(with(5, lines[5].substr(0, 64) + " nan")).find("line 6"), std::string::npos);
+  EXPECT_NE(message(with(5, lines[5].substr(0, 64) + " 1e300")).find("line 6"), std::string::npos);
+  EXPECT_NE(message(with(5, lines[5] + " junk")).find("line 6"), std::string::npos);
+  EXPECT_NE(message(with(5, lines[5] + "abc")).find("line 6"), std::string::npos);
+  EXPECT_NE(message(with(0, lines[0] + " junk")).find("line 1"), std::string::npos);
+  auto zero = lines;  // every idf 0: cannot tell images apart
+  for (std::size_t i = 1; i < zero.size(); ++i) zero[i] = zero[i].substr(0, 64) + " 0";
+  EXPECT_NE(message(zero).find("every idf is 0"), std::string::npos);
   EXPECT_NE(message({lines.begin(), lines.end() - 1}).find("7 of 8 words"), std::string::npos);
   auto longer = lines;
   longer.push_back(lines[1]);

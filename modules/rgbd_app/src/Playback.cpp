@@ -194,6 +194,7 @@ PlaybackSummary runPlayback(const PlaybackOptions& opt, std::ostream& log) {
   // No output may overwrite an input or another output; checked before anything is written.
   auto inputs = source->inputs();
   inputs.push_back({opt.config, "the configuration file (--config)"});
+  for (const auto& p : slamInputs(job.slam)) inputs.push_back(p);
   checkJobPaths(inputs, job.written);
   try {
     if (!opt.plot.empty()) checkPlotPath(opt.plot, "--plot");  // before the run, not after it

@@ -28,4 +28,9 @@ SlamParams loadSlamParams(const mrpt::config::CConfigFileBase& cfg, const std::s
   return slam;
 }
 
+std::vector<JobPath> slamInputs(const SlamParams& slam) {
+  if (!slam.enabled || slam.vocabulary.empty() || slam.vocabulary == "bundled") return {};
+  return {{slam.vocabulary, "the vocabulary ([Slam] vocabulary)"}};
+}
+
 }  // namespace hrgbd

@@ -108,6 +108,7 @@ void runLive(const LiveOptions& opt, std::ostream& log) {
   auto source = openFrameSource(opt.input, *cfg);  // throws "no OpenNI2 sensor ..." clearly
   auto inputs = source->inputs();
   inputs.push_back({opt.config, "the configuration file (--config)"});
+  for (const auto& p : slamInputs(slam)) inputs.push_back(p);
   checkJobPaths(inputs, savedFiles(opt.save_prefix));
   log << "input: " << source->describe() << "\nmethod: " << toString(params.method) << std::endl;
   LiveViewer viewer("hybrid-rgbd-odometry live: " + opt.input);

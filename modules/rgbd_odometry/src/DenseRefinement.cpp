@@ -233,7 +233,10 @@ DenseResult refineDense(const DensePyramid& cur, const DensePyramid& ref,
                       : 0;
     }
   }
-  if (out.photometric_pairs + out.geometric_pairs < static_cast<std::size_t>(p.min_pixels)) {
+  // pixels paired: each point-to-plane pair stands for geometric_stride^2 pixels
+  const std::size_t stride2 = static_cast<std::size_t>(p.geometric_stride * p.geometric_stride);
+  if (out.photometric_pairs + stride2 * out.geometric_pairs <
+      static_cast<std::size_t>(p.min_pixels)) {
     out.detail = "dense refinement: " + std::to_string(out.photometric_pairs) + " photometric + " +
                  std::to_string(out.geometric_pairs) + " geometric pairs < min_pixels";
     return out;

@@ -38,9 +38,11 @@ OdometryParams loopRegistration(OdometryParams odometry, const SlamParams& p) {
 }
 
 /** What the loop search keeps of a prepared keyframe: its features and pyramids. The images
- * (1.5 of 4.6 MB a keyframe at 640x480) only serve to compute features, and every path the loop
- * registration takes has its features already: ORB, or IS3D + SHOT for a frame with too few ORB
- * features (prepared by the tracker's hybrid registration). */
+ * (1.5 of 4.6 MB a keyframe at 640x480) only serve to compute features: a textured keyframe has
+ * its ORB features, one with too few has IS3D + SHOT (prepared by the tracker's hybrid
+ * registration). A textured keyframe's IS3D + SHOT are not made, so a keyframe with too few ORB
+ * features verifies only candidates like it (a geometric loop with loop_min_inliers between a
+ * plain and a textured view was never seen: none on the real plain structure either way). */
 std::shared_ptr<Frame> keptForLoops(const Frame& keyframe) {
   auto f = std::make_shared<Frame>(keyframe);
   f->guess.reset();
@@ -162,6 +164,7 @@ void KeyframeSlam::work() {
     }
     lock.lock();
     if (failed && !m_failed) m_failed = failed;
+    if (m_failed) m_queue.clear();  // the keyframes may be out of step: search no more
     m_busy = false;
     if (m_queue.empty()) m_idle.notify_all();
   }
@@ -286,7 +289,9 @@ std::optional<PoseGraphEdge> KeyframeSlam::verify(std::size_t id, std::size_t ca
   const mrpt::poses::CPose3D measured = toPose(reg.T);
   const auto d = (-predicted) + measured;
   // where the graph puts it, give or take the odometry's drift between the two
-  const double drift = m_params.loop_drift * (m_path[id] - m_path[candidate]);  // [m]
+  // [m], at most the search radius: beyond that the inliers and the chi-square check decide
+  const double drift =
+      std::min(m_params.loop_drift * (m_path[id] - m_path[candidate]), m_params.loop_search_radius);
   if (d.norm() > m_params.loop_max_discrepancy + drift ||
       angleRad(d) > mrpt::DEG2RAD(m_params.loop_max_discrepancy_deg) + drift / kLever)
     return std::nullopt;

@@ -16,6 +16,7 @@ namespace {
 
 constexpr int kBytes = 32;  // ORB: 256 bits
 const char* const kHeader = "HRGBD_ORB_VOCABULARY";
+constexpr double kMaxIdf = 50;  // log(images / 1): 50 would need e^50 training images
 
 void checkDescriptors(const cv::Mat& d, const char* what) {
   if (!d.empty() && (d.type() != CV_8U || d.cols != kBytes))
@@ -38,6 +39,7 @@ std::string bundledVocabulary() {
   std::error_code ec;
   const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
   if (!ec) places.push_back(exe.parent_path() / ".." / "share" / "hrgbd" / "orb_vocabulary.txt");
+  places.emplace_back(HRGBD_INSTALLED_VOCABULARY);
   places.emplace_back(HRGBD_SOURCE_VOCABULARY);
   std::string looked;
   for (const auto& p : places) {
@@ -70,6 +72,14 @@ Vocabulary Vocabulary::train(const cv::Mat& d, const std::vector<int>& image,
                                 " descriptors for " + std::to_string(p.words) + " words");
   if (image.size() != static_cast<std::size_t>(d.rows))
     throw std::invalid_argument("Vocabulary::train: one image index per descriptor needed");
+  if (std::set<int>(image.begin(), image.end()).size() < 2)
+    throw std::invalid_argument(
+        "Vocabulary::train: descriptors of one image only (the words' weights need several)");
+  std::set<std::string> distinct;
+  for (int i = 0; i < d.rows; ++i) distinct.emplace(d.ptr<char>(i), kBytes);
+  if (distinct.size() < static_cast<std::size_t>(p.words))
+    throw std::invalid_argument("Vocabulary::train: " + std::to_string(distinct.size()) +
+                                " distinct descriptors for " + std::to_string(p.words) + " words");
   std::mt19937 rng(p.seed);
   std::uniform_int_distribution<int> any(0, d.rows - 1);
   // start: k-means++ seeding (each next centre drawn with probability growing with the squared
@@ -128,11 +138,12 @@ Vocabulary Vocabulary::train(const cv::Mat& d, const std::vector<int>& image,
   std::set<int> images(image.begin(), image.end());
   for (int i = 0; i < d.rows; ++i) images_of_word[idx.at<int>(i)].insert(image[i]);
   v.m_idf.assign(p.words, 0.f);
-  for (int k = 0; k < p.words; ++k) {
-    const auto it = images_of_word.find(k);
-    const double n = it == images_of_word.end() ? 1.0 : static_cast<double>(it->second.size());
-    v.m_idf[k] = static_cast<float>(std::log(static_cast<double>(images.size()) / n));
-  }
+  for (const auto& [k, in] : images_of_word)  // a word no descriptor took keeps idf 0
+    v.m_idf[static_cast<std::size_t>(k)] =
+        static_cast<float>(std::log(static_cast<double>(images.size()) / in.size()));
+  if (*std::max_element(v.m_idf.begin(), v.m_idf.end()) <= 0)
+    throw std::invalid_argument(
+        "Vocabulary::train: every word is in every image: give images of different places");
   return v;
 }
 
@@ -159,7 +170,7 @@ void Vocabulary::save(const std::string& path) const {
     const std::uint8_t* w = m_words.ptr<std::uint8_t>(k);
     for (int b = 0; b < kBytes; ++b)
       s << std::hex << std::setw(2) << std::setfill('0') << int(w[b]);
-    s << std::dec << " " << std::setprecision(7) << m_idf[k] << "\n";
+    s << std::dec << " " << std::setprecision(9) << m_idf[k] << "\n";
   }
   std::ofstream out(path, std::ios::binary);
   if (!(out << s.str()) || !out.flush())
@@ -181,7 +192,8 @@ Vocabulary Vocabulary::load(const std::string& path) {
   std::string magic;
   int version = 0;
   long words = 0;
-  if (!(head >> magic >> version >> words) || magic != kHeader || version != 1)
+  if (!(head >> magic >> version >> words) || !(head >> std::ws).eof() || magic != kHeader ||
+      version != 1)
     throw fail(1, std::string("not a vocabulary (\"") + kHeader + " 1 <words>\" expected)");
   if (words < 2 || words > 1000000) throw fail(1, "word count out of range [2, 1000000]");
   Vocabulary v;
@@ -194,8 +206,9 @@ Vocabulary Vocabulary::load(const std::string& path) {
     std::istringstream ls(line);
     std::string hex;
     double idf = -1;
-    if (!(ls >> hex >> idf) || hex.size() != 2 * kBytes || !std::isfinite(idf) || idf < 0)
-      throw fail(n, "\"<64 hex digits> <idf >= 0>\" expected");
+    if (!(ls >> hex >> idf) || !(ls >> std::ws).eof() || hex.size() != 2 * kBytes ||
+        !(idf >= 0 && idf <= kMaxIdf))
+      throw fail(n, "\"<64 hex digits> <idf in [0, 50]>\" expected");
     std::uint8_t* w = v.m_words.ptr<std::uint8_t>(static_cast<int>(k));
     for (int b = 0; b < kBytes; ++b) {
       const std::string byte = hex.substr(2 * b, 2);
@@ -208,6 +221,9 @@ Vocabulary Vocabulary::load(const std::string& path) {
   for (std::size_t n = static_cast<std::size_t>(words) + 2; std::getline(in, line); ++n)
     if (line.find_first_not_of(" \t\r") != std::string::npos)
       throw fail(n, "more words than the header's " + std::to_string(words));
+  if (*std::max_element(v.m_idf.begin(), v.m_idf.end()) <= 0)
+    throw std::runtime_error("vocabulary " + path +
+                             ": every idf is 0, so it cannot tell images apart");
   return v;
 }
 

@@ -6,6 +6,7 @@
 
 #include <memory>
 
+#include "rgbd_core/JobPaths.h"
 #include "rgbd_odometry/OdometryParams.h"
 #include "rgbd_odometry/RgbdOdometry.h"
 #include "rgbd_slam/SlamParams.h"
@@ -24,5 +25,8 @@ std::unique_ptr<RgbdOdometry> makeOdometry(const OdometryParams& params,
  * with a baseline or peer. Its `vocabulary` is resolved against `base`, the INI file's folder. */
 SlamParams loadSlamParams(const mrpt::config::CConfigFileBase& cfg, const std::string& base,
                           Method method, bool on, bool off);
+
+/** The files the SLAM mode reads (its vocabulary, unless bundled), for checkJobPaths(). */
+std::vector<JobPath> slamInputs(const SlamParams& slam);
 
 }  // namespace hrgbd

@@ -53,8 +53,8 @@ struct SlamParams : public Params<SlamParams> {
    * before it (DBoW2's normalised score) */
   double loop_min_appearance = 0.5;
   /** [m/m] odometry drift allowed for: a verified loop may be loop_max_discrepancy plus this
-   * times the path between the two keyframes from where the graph puts it (rotation: the same
-   * over a 1.5 m lever arm) */
+   * times the path between the two keyframes (at most loop_search_radius) from where the graph
+   * puts it (rotation: the same over a 1.5 m lever arm) */
   double loop_drift = 0.05;
 
   template <class P, class V>

@@ -18,7 +18,8 @@ namespace hrgbd {
 using BowVector = std::vector<std::pair<std::uint32_t, float>>;
 
 /** The vocabulary shipped with the product ([Slam] vocabulary = bundled): share/hrgbd/ beside
- * the installed programs, else config/ of the source tree it was built from. Throws
+ * the running program's bin/, else in the configured install prefix, else config/ of the source
+ * tree it was built from. Throws
  * std::runtime_error listing where it looked. */
 std::string bundledVocabulary();
 
@@ -33,12 +34,13 @@ struct VocabularyTraining {
 
 class Vocabulary {
  public:
-  /** Clusters `descriptors` (CV_8U, 32 bytes a row, at least `p.words` rows); `image[i]` is the
-   * image row i came from, for the words' inverse document frequency. */
+  /** Clusters `descriptors` (CV_8U, 32 bytes a row, at least `p.words` distinct rows); `image[i]`
+   * is the image row i came from, for the words' inverse document frequency (at least two
+   * images). Throws std::invalid_argument when the data cannot make a useful vocabulary. */
   static Vocabulary train(const cv::Mat& descriptors, const std::vector<int>& image,
                           const VocabularyTraining& p);
   /** Reads a file save() wrote; throws std::runtime_error naming the file (and line) on any
-   * fault. */
+   * fault, or when every idf is 0. */
   static Vocabulary load(const std::string& path);
   /** Text: a header line, then per word its 64 hex digits and its idf. Throws on failure. */
   void save(const std::string& path) const;
