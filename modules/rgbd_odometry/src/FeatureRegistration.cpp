@@ -85,6 +85,7 @@ RegistrationResult GeometricRegistration::align(Frame& cur, Frame& ref) {
   const double overlap = double(icp.pairs) / std::max<std::size_t>(src.cloud.size(), 1);
   if (overlap < m_params.refine_min_overlap) {
     r.status = FrameResult::Status::LargeResiduals;
+    r.sparse_ok = false;
     r.detail = "clouds overlap " + std::to_string(int(100 * overlap)) + " % after refinement";
   }
   return r;

@@ -52,6 +52,7 @@ RegistrationResult matchAndFit(const FeatureSet& source, const FeatureSet& targe
   r.detail = toString(est.status);
   r.inliers = est.inliers.size();
   r.scale = est.scale;
+  r.sparse_ok = r.ok();
   if (est.ok())
     for (const auto i : est.inliers) r.inlier_points.push_back(corr.source[i].cast<float>());
   return r;

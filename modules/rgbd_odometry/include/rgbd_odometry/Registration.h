@@ -51,6 +51,9 @@ struct RegistrationResult {
   std::size_t matches = 0, inliers = 0;
   double scale = 0;                            //!< [m] estimator noise scale
   std::vector<Eigen::Vector3f> inlier_points;  //!< current frame's inliers, for display
+  /** the sparse fit (photometric or geometric) succeeded; after the dense refinement, whichever
+   * start won (false: a result of the refinement from the prediction alone) */
+  bool sparse_ok = false;
   bool ok() const { return status == FrameResult::Status::Ok; }
 };
 
