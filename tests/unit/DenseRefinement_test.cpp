@@ -1,6 +1,6 @@
 // The dense refinement on rendered pairs with an exact relative pose: convergence from a few cm
 // and degrees off, a correct estimate left in place, the better of two starts, and no
-// refinement without anything to refine with.
+// refinement without anything to refine with; a result of the prediction alone is no sparse fit.
 #include "rgbd_odometry/DenseRefinement.h"
 
 #include <gtest/gtest.h>
@@ -8,6 +8,7 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "rgbd_odometry/FeatureRegistration.h"
 #include "rgbd_odometry/RigidFit.h"
 #include "rgbd_sim/Render.h"
 #include "rgbd_sim/Simulator.h"
@@ -153,4 +154,48 @@ TEST(DenseRefinement, TinyImagesGiveFewerLevelsAndNoRefinement) {
   const auto one = hrgbd::buildDensePyramid(f, p);
   ASSERT_EQ(one.levels.size(), 1u);
   EXPECT_FALSE(hrgbd::refineDense(one, one, {Isometry3d::Identity()}, p).ok);  // 9 < min_pixels
+}
+
+namespace {
+
+// A sparse registration that answers with a scripted result.
+class ScriptedSparse : public hrgbd::Registration {
+ public:
+  explicit ScriptedSparse(hrgbd::RegistrationResult r) : m_r(std::move(r)) {}
+  hrgbd::FrameFeatures prepare(hrgbd::Frame&) override { return {}; }
+  hrgbd::RegistrationResult align(hrgbd::Frame&, hrgbd::Frame&) override { return m_r; }
+
+ private:
+  hrgbd::RegistrationResult m_r;
+};
+
+}  // namespace
+
+TEST(DenseRefined, AResultOfThePredictionAloneIsNotASparseFit) {
+  // The SLAM mode accepts a loop only on a sparse fit that succeeded: the refinement from the
+  // prediction alone must say that it is not one, though it registers.
+  const auto scene = hrgbd::sim::makeScene("desk", false);
+  const auto ref_pose =
+      hrgbd::sim::lookAt(Eigen::Vector3d(0, 0.0, 1.2), Eigen::Vector3d(0, 1.3, 0.75));
+  hrgbd::Frame cur, ref;
+  cur.image = render(scene, ref_pose + kMotion);
+  ref.image = render(scene, ref_pose);
+  const Isometry3d truth = hrgbd::toIsometry(kMotion);
+  for (const bool sparse : {false, true}) {
+    hrgbd::RegistrationResult s;
+    s.status = sparse ? hrgbd::FrameResult::Status::Ok : hrgbd::FrameResult::Status::TooFewMatches;
+    s.sparse_ok = sparse;
+    s.inliers = 150;  // a failed fit may still count inliers
+    s.T = perturbed(truth, 0.01, 1.0);
+    s.seen.path = "photometric";
+    hrgbd::DenseRefined dense(std::make_unique<ScriptedSparse>(s), hrgbd::DenseParams());
+    dense.prepare(cur);
+    dense.prepare(ref);
+    cur.guess = perturbed(truth, 0.02, -1.5);
+    const auto r = dense.align(cur, ref);
+    ASSERT_TRUE(r.ok()) << r.detail;
+    EXPECT_LT(error(r.T, truth).first, 0.002);
+    EXPECT_EQ(r.sparse_ok, sparse);
+    if (!sparse) EXPECT_EQ(r.seen.path, "dense");
+  }
 }
