@@ -196,6 +196,8 @@ TEST(DenseRefined, AResultOfThePredictionAloneIsNotASparseFit) {
     ASSERT_TRUE(r.ok()) << r.detail;
     EXPECT_LT(error(r.T, truth).first, 0.002);
     EXPECT_EQ(r.sparse_ok, sparse);
-    if (!sparse) EXPECT_EQ(r.seen.path, "dense");
+    if (!sparse) {
+      EXPECT_EQ(r.seen.path, "dense");
+    }
   }
 }

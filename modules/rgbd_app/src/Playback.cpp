@@ -1,6 +1,5 @@
 #include "rgbd_app/Playback.h"
 
-#include <filesystem>
 #include <iomanip>
 #include <iostream>
 
@@ -33,8 +32,7 @@ PlaybackJob resolveJob(const PlaybackOptions& opt) {
   PlaybackJob job;
   job.cfg = loadChecked(opt.config);
   PlaybackSection pb;
-  const std::string base =
-      opt.config.empty() ? "." : std::filesystem::path(opt.config).parent_path().string();
+  const std::string base = iniFolder(opt.config);
   pb.load(*job.cfg, base);
   if (!opt.ini_outputs) pb.csv.clear(), pb.outputs = {};
   job.odometry.loadFromConfigFile(*job.cfg, "Odometry");

@@ -116,7 +116,7 @@ BenchmarkParams loadBenchmarkParams(const std::string& config_file) {
   const auto cfg = loadChecked(config_file);
   BenchmarkParams p;
   p.loadFromConfigFile(*cfg, "Benchmark");
-  const auto base = fs::path(config_file).parent_path().string();
+  const auto base = iniFolder(config_file);
   p.cache_folder = resolvePath(base, p.cache_folder);
   p.output_folder = resolvePath(base, p.output_folder);
   p.paper_config = resolvePath(base, p.paper_config);

@@ -38,6 +38,11 @@ std::string resolvePath(const std::string& base, const std::string& path) {
   return (std::filesystem::path(base) / path).lexically_normal().string();
 }
 
+std::string iniFolder(const std::string& config) {
+  const auto folder = std::filesystem::path(config).parent_path();
+  return folder.empty() ? "." : folder.string();
+}
+
 void rejectRepeatedEntries(const std::string& text, const std::string& name) {
   // MRPT merges a repeated section and keeps one of two values of a key without a word; these
   // are nearly always editing mistakes (a pasted block), so they are refused.
@@ -87,9 +92,9 @@ std::unique_ptr<mrpt::config::CConfigFileBase> loadIniFile(const std::string& pa
 }
 
 const std::vector<std::string>& knownConfigSections() {
-  static const std::vector<std::string> s{
-      "Playback", "Odometry", "ORB",       "Geometric", "MSSE",      "Dense",    "Slam", "RANSAC",
-      "ICP",      "Map",      "TumSource", "OpenNI2",   "Simulator", "Benchmark"};
+  static const std::vector<std::string> s{"Playback",  "Odometry", "ORB",       "Geometric", "MSSE",
+                                          "Dense",     "Slam",     "RANSAC",    "ICP",       "Map",
+                                          "TumSource", "OpenNI2",  "Simulator", "Benchmark"};
   return s;
 }
 

@@ -1,7 +1,6 @@
 #include "rgbd_live/Live.h"
 
 #include <chrono>
-#include <filesystem>
 #include <ostream>
 #include <thread>
 
@@ -102,8 +101,7 @@ void runLive(const LiveOptions& opt, std::ostream& log) {
   MapParams map_params;
   map_params.loadFromConfigFile(*cfg, "Map");
   const SlamParams slam =
-      loadSlamParams(*cfg, std::filesystem::path(opt.config).parent_path().string(), params.method,
-                     opt.slam, opt.no_slam);
+      loadSlamParams(*cfg, iniFolder(opt.config), params.method, opt.slam, opt.no_slam);
   auto odometry = makeOdometry(params, *cfg);
   auto source = openFrameSource(opt.input, *cfg);  // throws "no OpenNI2 sensor ..." clearly
   auto inputs = source->inputs();

@@ -21,6 +21,9 @@ double angleRad(const mrpt::poses::CPose3D& d) {
 
 constexpr double kLever = 1.5;  // [m] typical depth: rotation sigma = translation sigma / lever
 
+/** [m] how far apart two views are: the translation plus the rotation over the lever arm */
+double viewDistance(const mrpt::poses::CPose3D& d) { return d.norm() + kLever * angleRad(d); }
+
 /** Information of a registration on `inliers` sparse inliers (dense-only: as 10). */
 mrpt::math::CMatrixDouble66 fitInformation(const SlamParams& p, std::size_t inliers, bool loop) {
   const double sigma = p.edge_sigma * std::sqrt(100.0 / std::max<double>(inliers, 10)) *
@@ -178,8 +181,7 @@ void KeyframeSlam::process(Job job) {
   if (!job.first) {
     m_graph.addNode(m_graph.pose(job.odometry.from) + job.odometry.relative);
     m_graph.addEdge(job.odometry);
-    const auto& d = job.odometry.relative;
-    m_path.push_back(m_path.back() + d.norm() + kLever * angleRad(d));
+    m_path.push_back(m_path.back() + viewDistance(job.odometry.relative));
   } else {
     m_graph.addNode(job.pose);
     m_path.push_back(0);
@@ -234,7 +236,7 @@ std::vector<KeyframeSlam::Candidate> KeyframeSlam::candidates(std::size_t id) co
     const double metres = d.norm(), angle = angleRad(d);
     if (metres <= m_params.loop_search_radius &&
         angle <= mrpt::DEG2RAD(m_params.loop_search_angle_deg))
-      near.emplace_back(metres + kLever * angle, j);
+      near.emplace_back(viewDistance(d), j);
   }
   std::sort(near.begin(), near.end());
   // the nearest views, then the most alike, spread over the sequence: each at least
@@ -284,9 +286,10 @@ std::optional<PoseGraphEdge> KeyframeSlam::verify(std::size_t id, std::size_t ca
   // succeeded: the refinement from the prediction alone only repeats the graph (such results
   // came back as loops up to 13 cm off on fr1/rpy).
   const mrpt::poses::CPose3D predicted = (-m_graph.pose(candidate)) + m_graph.pose(id);
-  Frame cur = *m_keyframes[id];  // the guess is this attempt's own
+  Frame& cur = *m_keyframes[id];  // the worker's own: the guess is set for this attempt only
   cur.guess = toIsometry(predicted);
   const RegistrationResult reg = m_registration->align(cur, *m_keyframes[candidate]);
+  cur.guess.reset();
   if (!reg.ok() || !reg.sparse_ok ||
       reg.inliers < static_cast<std::size_t>(m_params.loop_min_inliers))
     return std::nullopt;

@@ -36,6 +36,10 @@ void requireValid(bool ok, const std::string& section, const std::string& key, d
 /** `path` relative to `base` (the INI file's folder) unless it is empty or absolute. */
 std::string resolvePath(const std::string& base, const std::string& path);
 
+/** The folder of INI file `config`, against which its relative paths are resolved ("." for no
+ * file). */
+std::string iniFolder(const std::string& config);
+
 /** Every name of an enum declared with MRPT_ENUM_TYPE_BEGIN / MRPT_FILL_ENUM_CUSTOM_NAME, in
  * declaration order: the allowed values for INI files and command lines. */
 template <class E>
