@@ -63,7 +63,8 @@ std::string toText(const SlamStats& s) {
       << s.loops_accepted << " loops accepted (" << s.appearance_loops << " by appearance), "
       << s.loops_dropped << " dropped as inconsistent; loop search median "
       << percentile(s.search_ms, 0.5) << " ms per keyframe, " << s.optimizations
-      << " optimisations, median " << percentile(s.optimize_ms, 0.5) << " ms\n";
+      << " optimisations, median " << percentile(s.optimize_ms, 0.5) << " ms; largest backlog "
+      << s.largest_backlog << " keyframes, tracking waited " << s.backlog_waits << " times\n";
   return out.str();
 }
 
@@ -114,10 +115,17 @@ bool KeyframeSlam::add(FrameResult& r, RgbdOdometry& tracker) {
     m_keyframe_frame.push_back(m_places.size());
     if (m_params.background) {
       {
-        std::lock_guard<std::mutex> lock(m_mutex);
+        std::unique_lock<std::mutex> lock(m_mutex);
+        const auto backlog = static_cast<std::size_t>(m_params.max_backlog);
+        if (m_queue.size() >= backlog) {
+          ++m_stats.backlog_waits;
+          m_idle.wait(lock, [&] { return m_queue.size() < backlog || m_failed; });
+        }
         m_queue.push_back(std::move(job));
+        m_stats.largest_backlog = std::max(m_stats.largest_backlog, m_queue.size());
       }
       m_wake.notify_all();
+      rethrowWorkerFailure();
     } else {
       process(std::move(job));
     }
@@ -169,7 +177,7 @@ void KeyframeSlam::work() {
     if (failed && !m_failed) m_failed = failed;
     if (m_failed) m_queue.clear();  // the keyframes may be out of step: search no more
     m_busy = false;
-    if (m_queue.empty()) m_idle.notify_all();
+    m_idle.notify_all();  // flush() waits for an empty queue, add() for room in it
   }
 }
 

@@ -39,6 +39,8 @@ struct SlamStats {
   std::size_t appearance_loops = 0;  //!< of them: candidates by appearance only
   std::size_t loops_dropped = 0;     //!< loop edges dropped as inconsistent by the optimisation
   std::size_t optimizations = 0;
+  std::size_t largest_backlog = 0;  //!< most keyframes ever waiting for the loop search
+  std::size_t backlog_waits = 0;    //!< times the tracking waited for it (max_backlog reached)
   std::vector<double> search_ms;    //!< [ms] loop search and verification, per keyframe with
                                     //!< candidates
   std::vector<double> optimize_ms;  //!< [ms] per optimisation
