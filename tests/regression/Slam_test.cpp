@@ -6,6 +6,7 @@
 #include <mrpt/math/CQuaternion.h>
 #include <mrpt/poses/CPose3DQuat.h>
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 
@@ -168,8 +169,12 @@ TEST(Slam, ABoundedBacklogKeepsEveryKeyframesLoopSearch) {
   std::ostringstream log;
   const auto s = hrgbd::runPlayback(o, log);
   EXPECT_EQ(s.slam_stats.largest_backlog, 1u) << log.str();
-  EXPECT_GT(s.slam_stats.backlog_waits, 0u) << log.str();
-  EXPECT_GT(s.slam_stats.keyframes, 20u);
+  // (the tracking's waits are not asserted: they depend on the two threads' speeds; measured 16)
+  // every keyframe of the tracking is a node of the graph
+  const auto keyframes = std::count_if(s.results.begin(), s.results.end(),
+                                       [](const auto& r) { return r.keyframe && r.registered(); });
+  EXPECT_GT(keyframes, 20);
+  EXPECT_EQ(s.slam_stats.keyframes, static_cast<std::size_t>(keyframes));
   EXPECT_GE(s.slam_stats.loops_accepted, 3u) << log.str();
   ASSERT_GE(s.loop_check.checked, 3u) << log.str();
   EXPECT_LT(s.loop_check.largest_translation, 0.03) << log.str();

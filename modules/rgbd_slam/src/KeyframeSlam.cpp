@@ -121,11 +121,12 @@ bool KeyframeSlam::add(FrameResult& r, RgbdOdometry& tracker) {
           ++m_stats.backlog_waits;
           m_idle.wait(lock, [&] { return m_queue.size() < backlog || m_failed; });
         }
+        // the worker failed: the graph is out of step, no more jobs for it
+        if (m_failed) std::rethrow_exception(m_failed);
         m_queue.push_back(std::move(job));
         m_stats.largest_backlog = std::max(m_stats.largest_backlog, m_queue.size());
       }
       m_wake.notify_all();
-      rethrowWorkerFailure();
     } else {
       process(std::move(job));
     }
@@ -166,6 +167,7 @@ void KeyframeSlam::work() {
     Job job = std::move(m_queue.front());
     m_queue.pop_front();
     m_busy = true;
+    m_idle.notify_all();  // room in the queue: add() may go on
     lock.unlock();
     std::exception_ptr failed;
     try {
@@ -177,7 +179,7 @@ void KeyframeSlam::work() {
     if (failed && !m_failed) m_failed = failed;
     if (m_failed) m_queue.clear();  // the keyframes may be out of step: search no more
     m_busy = false;
-    m_idle.notify_all();  // flush() waits for an empty queue, add() for room in it
+    m_idle.notify_all();  // flush() waits for an empty queue and an idle worker
   }
 }
 

@@ -46,7 +46,8 @@ struct SlamStats {
   std::vector<double> optimize_ms;  //!< [ms] per optimisation
 };
 
-/** "SLAM: N keyframes, ... loops ..., search ms median ..., optimisation ms median ...\n" */
+/** "SLAM: N keyframes, ... loops ..., search ms median ..., optimisation ms median ...; largest
+ * backlog ..., tracking waited ... times\n" */
 std::string toText(const SlamStats& s);
 
 class KeyframeSlam {

@@ -12,7 +12,7 @@ struct SlamParams : public Params<SlamParams> {
   bool background = true;  //!< loop search and optimisation in a thread beside the tracking
   /** [keyframes] with this many keyframes waiting for the background loop search, the tracking
    * waits for it: memory and delay stay bounded and no keyframe goes unsearched */
-  int max_backlog = 8;
+  int max_backlog = 16;
   /** [m] keyframes whose estimated position is within this distance of a new keyframe ... */
   double loop_search_radius = 0.6;
   double loop_search_angle_deg = 35;  //!< [deg] ... and whose view is within this rotation
