@@ -63,9 +63,15 @@ const Runs& runs() {
   return r;
 }
 
-hrgbd::PlaybackOptions options(const std::string& name, bool slam) {
+// A run named `name` on the revisit; with `ini`, the configuration is that text (written to
+// <name>.ini) instead of the project's config.ini.
+hrgbd::PlaybackOptions options(const std::string& name, bool slam, const std::string& ini = "") {
   hrgbd::PlaybackOptions o;
   o.config = std::string(HRGBD_SOURCE_DIR) + "/config.ini";
+  if (!ini.empty()) {
+    o.config = runs().dir + "/" + name + ".ini";
+    std::ofstream(o.config) << ini;
+  }
   o.input = runs().folder;
   o.trajectory = runs().dir + "/" + name + ".txt";
   o.progress = false;
@@ -116,15 +122,10 @@ TEST(Slam, SimulatedRevisitClosesCorrectLoops) {
 TEST(Slam, WithoutLoopsItIsTheOdometry) {
   // the SLAM mode with its loop search off (by position and by appearance): a chain of keyframes,
   // frames following them
-  const std::string ini = runs().dir + "/no_loops.ini";
-  std::ofstream(ini) << "[Slam]\nloop_max_candidates = 0\nloop_appearance_candidates = 0\n";
-  auto o = options("odometry", false);
-  o.config = ini;
+  const std::string ini = "[Slam]\nloop_max_candidates = 0\nloop_appearance_candidates = 0\n";
   std::ostringstream log;
-  const auto odometry = hrgbd::runPlayback(o, log);
-  o = options("no_loops", true);
-  o.config = ini;
-  const auto slam = hrgbd::runPlayback(o, log);
+  const auto odometry = hrgbd::runPlayback(options("odometry", false, ini), log);
+  const auto slam = hrgbd::runPlayback(options("no_loops", true, ini), log);
   ASSERT_EQ(slam.results.size(), odometry.results.size());
   EXPECT_EQ(slam.slam_stats.loops_accepted, 0u);
   EXPECT_GT(slam.slam_stats.keyframes, 3u);
@@ -137,20 +138,17 @@ TEST(Slam, WithoutLoopsItIsTheOdometry) {
 TEST(Slam, AppearanceFindsLoopsWhereThePositionSearchDoesNot) {
   // a search window of 1 mm: no keyframe is near enough by position, as after a long drift; the
   // bundled vocabulary finds the revisited views, and their loops are right
-  const std::string ini = runs().dir + "/appearance.ini";
-  std::ofstream(ini) << "[Slam]\nloop_search_radius = 0.001\n";
-  auto o = options("appearance", true);
-  o.config = ini;
   std::ostringstream log;
-  const auto s = hrgbd::runPlayback(o, log);
+  const auto s =
+      hrgbd::runPlayback(options("appearance", true, "[Slam]\nloop_search_radius = 0.001\n"), log);
   EXPECT_GE(s.slam_stats.appearance_loops, 2u) << log.str();
   EXPECT_EQ(s.slam_stats.appearance_loops, s.slam_stats.loops_accepted) << log.str();
   ASSERT_GE(s.loop_check.checked, 2u) << log.str();
   EXPECT_LT(s.loop_check.largest_translation, 0.03) << log.str();
   EXPECT_LT(s.loop_check.largest_rotation, 2.0) << log.str();
   // without a vocabulary, nothing
-  std::ofstream(ini) << "[Slam]\nloop_search_radius = 0.001\nvocabulary =\n";
-  const auto none = hrgbd::runPlayback(o, log);
+  const auto none = hrgbd::runPlayback(
+      options("no_vocabulary", true, "[Slam]\nloop_search_radius = 0.001\nvocabulary =\n"), log);
   EXPECT_EQ(none.slam_stats.loops_accepted, 0u);
   EXPECT_EQ(none.slam_stats.candidates, 0u);
 }
@@ -160,11 +158,8 @@ TEST(Slam, ABoundedBacklogKeepsEveryKeyframesLoopSearch) {
   // backlog reached 9 keyframes without a bound). With one keyframe at most waiting, the tracking
   // waits for it instead of piling keyframes up, and every keyframe is still searched (measured:
   // the same 57 loops and ATE with and without the bound)
-  const std::string ini = runs().dir + "/backlog.ini";
-  std::ofstream(ini) << "[Odometry]\nkeyframe_max_translation = 0.001\n"
-                     << "[Slam]\nmax_backlog = 1\n";
-  auto o = options("backlog", true);
-  o.config = ini;
+  auto o = options("backlog", true,
+                   "[Odometry]\nkeyframe_max_translation = 0.001\n[Slam]\nmax_backlog = 1\n");
   o.max_frames = 25;
   std::ostringstream log;
   const auto s = hrgbd::runPlayback(o, log);
