@@ -194,11 +194,16 @@ NormalEquations solveLevel(const LevelSolver& solver, Eigen::Isometry3d& T, cons
     const Vector6d delta = n.H.ldlt().solve(-n.b);
     if (!delta.allFinite()) break;
     const Eigen::Isometry3d next = expSe3(delta) * T;
+    // converged (0.1 mm, 0.006 deg): the step is taken without an evaluation of its own (most
+    // levels would end with it anyway)
+    if (delta.norm() < 1e-4) {
+      T = next;
+      break;
+    }
     NormalEquations n2 = solver.normalEquations(next, photo_sigma);
     ++iterations;
     if (n2.cost > n.cost) break;  // a step uphill: keep the previous estimate
     T = next, n = n2;
-    if (delta.norm() < 1e-4) break;  // 0.1 mm, 0.006 deg
   }
   return n;
 }
