@@ -1,6 +1,7 @@
 // The dense refinement on rendered pairs with an exact relative pose: convergence from a few cm
-// and degrees off, a correct estimate left in place, the better of two starts, and no
-// refinement without anything to refine with; a result of the prediction alone is no sparse fit.
+// and degrees off, a correct estimate left in place, the better of two starts, no evaluation
+// spent on a converged estimate, and no refinement without anything to refine with; a result of
+// the prediction alone is no sparse fit.
 #include "rgbd_odometry/DenseRefinement.h"
 
 #include <gtest/gtest.h>
@@ -200,4 +201,21 @@ TEST(DenseRefined, AResultOfThePredictionAloneIsNotASparseFit) {
       EXPECT_EQ(r.seen.path, "dense");
     }
   }
+}
+
+// A step below the convergence threshold (0.1 mm, 0.006 deg) is taken without an evaluation of
+// its own: refining a converged estimate again on one level costs no evaluation and moves it by
+// less than that threshold.
+TEST(DenseRefinement, AConvergedEstimateCostsNoFurtherEvaluation) {
+  hrgbd::DenseParams p;
+  p.levels = 2, p.finest_level = 1, p.iterations = 50;  // one level, run to convergence
+  const auto pair = renderPair("desk", kMotion, p);
+  const auto first = hrgbd::refineDense(pair.cur, pair.ref, {perturbed(pair.truth, 0.003, 0.3)}, p);
+  ASSERT_TRUE(first.ok) << first.detail;
+  EXPECT_GT(first.iterations, 1);
+  EXPECT_LT(error(first.T, pair.truth).first, 0.002);
+  const auto again = hrgbd::refineDense(pair.cur, pair.ref, {first.T}, p);
+  ASSERT_TRUE(again.ok) << again.detail;
+  EXPECT_EQ(again.iterations, 0);                  // measured 0 (8 the first time)
+  EXPECT_LT(error(again.T, first.T).first, 1e-4);  // measured 0.07 mm
 }
