@@ -185,7 +185,8 @@ Eigen::Isometry3d expSe3(const Vector6d& d) {
   return E;
 }
 
-// Gauss-Newton at one level from T; returns the last evaluation (at the returned T).
+// Gauss-Newton at one level from T; returns the last evaluation: at the returned T, or one
+// converged step (under 1e-4) before it.
 NormalEquations solveLevel(const LevelSolver& solver, Eigen::Isometry3d& T, const DenseParams& p,
                            int& iterations) {
   const double photo_sigma = solver.photometricSigma(T);  // fixed per level
@@ -194,8 +195,8 @@ NormalEquations solveLevel(const LevelSolver& solver, Eigen::Isometry3d& T, cons
     const Vector6d delta = n.H.ldlt().solve(-n.b);
     if (!delta.allFinite()) break;
     const Eigen::Isometry3d next = expSe3(delta) * T;
-    // converged (0.1 mm, 0.006 deg): the step is taken without an evaluation of its own (most
-    // levels would end with it anyway)
+    // converged (0.1 mm, 0.006 deg): the step is taken without an evaluation of its own (the
+    // level would end after it whether accepted or refused)
     if (delta.norm() < 1e-4) {
       T = next;
       break;

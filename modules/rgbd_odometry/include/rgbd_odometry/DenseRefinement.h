@@ -95,8 +95,10 @@ struct DenseResult {
   bool ok = false;
   Eigen::Isometry3d T = Eigen::Isometry3d::Identity();     //!< maps current points into reference
   std::size_t photometric_pairs = 0, geometric_pairs = 0;  //!< at the finest level
-  int iterations = 0;                                      //!< Gauss-Newton steps, all levels
-  std::size_t start = 0;                                   //!< index of the start that fitted best
+  /** Gauss-Newton steps evaluated, all levels (taken or refused as uphill; a converged step is
+   * taken without an evaluation and not counted) */
+  int iterations = 0;
+  std::size_t start = 0;  //!< index of the start that fitted best
   /** smallest eigenvalue of the mean n n^T of the paired reference normals: near 0 when the
    * surfaces seen do not face three independent directions (a plane, a corner) */
   double normal_spread = 0;
