@@ -224,3 +224,37 @@ TEST(DenseRefinement, AConvergedEstimateCostsNoFurtherEvaluation) {
   }
   EXPECT_EQ(d.iterations, 0) << "after " << calls << " calls";  // measured: the 2nd call
 }
+
+// The cells whose corners all have a gradient below min_gradient are skipped before sampling
+// (DenseLevel::textured): a shortcut that must give the same result as sampling every cell.
+TEST(DenseRefinement, SkippingUntexturedCellsChangesNothing) {
+  hrgbd::DenseParams p;
+  p.min_gradient = 8;  // many cells below it on the desk renders
+  const auto pair = renderPair("desk", kMotion, p);
+  DensePyramid every_cell = pair.ref;
+  std::size_t skipped = 0;
+  for (auto& level : every_cell.levels) {
+    skipped += level.textured.total() - static_cast<std::size_t>(cv::countNonZero(level.textured));
+    level.textured = cv::Mat(level.textured.size(), CV_8U, cv::Scalar(1));  // new data
+  }
+  ASSERT_GT(skipped, every_cell.levels.front().textured.total() / 10);
+  // a cell is skipped exactly when none of its 4 corners reaches min_gradient
+  for (const auto& l : pair.ref.levels)
+    for (int v = 0; v + 1 < l.gx.rows; ++v)
+      for (int u = 0; u + 1 < l.gx.cols; ++u) {
+        bool strong = false;
+        for (int k = 0; k < 4; ++k) {
+          const float gx = l.gx.at<float>(v + k / 2, u + k % 2),
+                      gy = l.gy.at<float>(v + k / 2, u + k % 2);
+          strong = strong || gx * gx + gy * gy >= p.min_gradient * p.min_gradient;
+        }
+        ASSERT_EQ(l.textured.at<uchar>(v, u) != 0, strong) << "cell " << u << ", " << v;
+      }
+  const Isometry3d start = perturbed(pair.truth, 0.01, 1.0);
+  const auto a = hrgbd::refineDense(pair.cur, pair.ref, {start}, p);
+  const auto b = hrgbd::refineDense(pair.cur, every_cell, {start}, p);
+  ASSERT_TRUE(a.ok) << a.detail;
+  EXPECT_TRUE(a.T.matrix() == b.T.matrix());
+  EXPECT_EQ(a.photometric_pairs, b.photometric_pairs);
+  EXPECT_EQ(a.iterations, b.iterations);
+}

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 #include <opencv2/imgproc.hpp>
+#include <vector>
 
 #include "rgbd_odometry/DenseRefinement.h"
 
@@ -35,8 +36,13 @@ cv::Mat halveDepth(const cv::Mat& d) {
 // where a neighbour is unknown or across a jump larger than `max_jump` [m].
 cv::Mat depthNormals(const cv::Mat& depth, const PinholeCamera& cam, double max_jump) {
   cv::Mat n(depth.size(), CV_32FC3, cv::Scalar::all(kNaN));
+  // the back-projection's factors per column and row: vertex = (xs[u] z, ys[v] z, z)
+  std::vector<float> xs(depth.cols), ys(depth.rows);
+  for (int u = 0; u < depth.cols; ++u) xs[u] = static_cast<float>((u - cam.cx) / cam.fx);
+  for (int v = 0; v < depth.rows; ++v) ys[v] = static_cast<float>((v - cam.cy) / cam.fy);
   auto vertex = [&](int u, int v) {
-    return cam.backProject(u, v, depth.at<float>(v, u)).cast<float>().eval();
+    const float z = depth.at<float>(v, u);
+    return Eigen::Vector3f(xs[u] * z, ys[v] * z, z);
   };
   for (int v = 1; v + 1 < depth.rows; ++v)
     for (int u = 1; u + 1 < depth.cols; ++u) {
@@ -57,6 +63,16 @@ cv::Mat depthNormals(const cv::Mat& depth, const PinholeCamera& cam, double max_
   return n;
 }
 
+// 1 where a corner of the 2x2 cell has a gradient of at least `min_gradient`: a bilinear sample
+// of the gradient is a convex combination of the corners', never longer than the longest.
+cv::Mat texturedCells(const cv::Mat& gx, const cv::Mat& gy, double min_gradient) {
+  // (a margin of 1e-4 for the rounding of the float samples)
+  cv::Mat strong = gx.mul(gx) + gy.mul(gy) >= min_gradient * min_gradient * (1 - 1e-4);
+  cv::Mat cells;
+  cv::dilate(strong, cells, cv::Mat::ones(2, 2, CV_8U), cv::Point(0, 0));
+  return cells;
+}
+
 PinholeCamera halveCamera(PinholeCamera c) {
   c.fx /= 2, c.fy /= 2;
   c.cx = (c.cx + 0.5) / 2 - 0.5, c.cy = (c.cy + 0.5) / 2 - 0.5;
@@ -70,6 +86,14 @@ void DenseParams::checkTogether(const std::string& section) const {
   if (finest_level >= levels)
     throw ConfigError("[" + section + "] finest_level = " + std::to_string(finest_level) +
                       " must be below levels = " + std::to_string(levels));
+}
+
+void addDerivatives(DenseLevel& level, const DenseParams& params) {
+  level.gx.release(), level.gy.release();                 // new data: never written into a copy's
+  cv::Sobel(level.grey, level.gx, CV_32F, 1, 0, 1, 0.5);  // central differences
+  cv::Sobel(level.grey, level.gy, CV_32F, 0, 1, 1, 0.5);
+  level.textured = texturedCells(level.gx, level.gy, params.min_gradient);
+  level.normals = depthNormals(level.depth, level.cam, params.max_depth_difference);
 }
 
 DensePyramid buildDensePyramid(const RgbdImage& image, const DenseParams& params) {
@@ -88,10 +112,8 @@ DensePyramid buildDensePyramid(const RgbdImage& image, const DenseParams& params
       level.cam = halveCamera(level.cam);
     }
     if (l < params.finest_level) continue;
-    DenseLevel out{level.cam, level.grey, level.depth, {}, {}, {}};
-    cv::Sobel(out.grey, out.gx, CV_32F, 1, 0, 1, 0.5);  // central differences
-    cv::Sobel(out.grey, out.gy, CV_32F, 0, 1, 1, 0.5);
-    out.normals = depthNormals(out.depth, out.cam, params.max_depth_difference);
+    DenseLevel out{level.cam, level.grey, level.depth, {}, {}, {}, {}};
+    addDerivatives(out, params);
     pyramid.levels.push_back(std::move(out));
   }
   return pyramid;

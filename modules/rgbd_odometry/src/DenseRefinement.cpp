@@ -34,7 +34,7 @@ struct Bilinear {
 
 // Jacobian of a residual whose derivative with respect to the moved point P is g, for a left
 // perturbation exp(delta) T with delta = (translation, rotation).
-Vector6d jacobian(const Eigen::Vector3d& P, const Eigen::Vector3d& g) {
+inline Vector6d jacobian(const Eigen::Vector3d& P, const Eigen::Vector3d& g) {
   Vector6d J;
   J << g, P.cross(g);
   return J;
@@ -90,10 +90,9 @@ class LevelSolver {
   double photometricSigma(const Eigen::Isometry3d& T) const {
     std::vector<float> a;
     a.reserve(m_points.size());
-    forEachPair(T,
-                [&](const Eigen::Vector3d&, double u, double v, int, int, float, float grey, bool) {
-                  a.push_back(std::abs(Bilinear(m_ref.grey, u, v)(m_ref.grey) - grey));
-                });
+    forEachPair(
+        T, [&](const Eigen::Vector3d&, double, double u, double v, int, int, float, float grey,
+               bool) { a.push_back(std::abs(Bilinear(m_ref.grey, u, v)(m_ref.grey) - grey)); });
     if (a.empty()) return 1;
     std::nth_element(a.begin(), a.begin() + a.size() / 2, a.end());
     return std::max(1.0, 1.4826 * a[a.size() / 2]);
@@ -103,9 +102,10 @@ class LevelSolver {
   NormalEquations normalEquations(const Eigen::Isometry3d& T, double photo_sigma) const {
     NormalEquations n;
     const double k = m_p.huber, cap = 2.5 * k * k;  // Huber cost at e = 3k
-    auto add = [&](const Vector6d& J, double r, double sigma, double weight) {
-      const double e = std::abs(r) / sigma;
-      const double w = weight * (e <= k ? 1 : k / e) / (sigma * sigma);
+    // inv_sigma: 1 / the residual's noise sigma
+    auto add = [&](const Vector6d& J, double r, double inv_sigma, double weight) {
+      const double e = std::abs(r) * inv_sigma;
+      const double w = weight * (e <= k ? 1 : k / e) * inv_sigma * inv_sigma;
       // the lower triangle only (H is symmetric; completed below)
       for (int j = 0; j < 6; ++j) {
         const double wj = w * J[j];
@@ -117,16 +117,16 @@ class LevelSolver {
       n.score += std::min(rho, cap);
     };
     const auto& c = m_ref.cam;
-    forEachPair(T, [&](const Eigen::Vector3d& P, double u, double v, int ui, int vi, float zr,
-                       float grey, bool geometric) {
-      if (m_p.photometric_weight > 0) {
-        const Bilinear at(m_ref.grey, u, v);
+    const double inv_photo_sigma = 1 / photo_sigma;
+    forEachPair(T, [&](const Eigen::Vector3d& P, double iz, double u, double v, int ui, int vi,
+                       float zr, float grey, bool geometric) {
+      const Bilinear at(m_ref.grey, u, v);
+      if (m_p.photometric_weight > 0 && m_ref.textured.at<uchar>(at.v0, at.u0)) {
         const double gx = at(m_ref.gx), gy = at(m_ref.gy);
         if (gx * gx + gy * gy >= m_p.min_gradient * m_p.min_gradient) {
-          const double iz = 1 / P.z();
           const Eigen::Vector3d g(gx * c.fx * iz, gy * c.fy * iz,
                                   -(gx * c.fx * P.x() + gy * c.fy * P.y()) * iz * iz);
-          add(jacobian(P, g), at(m_ref.grey) - grey, photo_sigma, m_p.photometric_weight);
+          add(jacobian(P, g), at(m_ref.grey) - grey, inv_photo_sigma, m_p.photometric_weight);
           ++n.photometric;
         }
       }
@@ -136,8 +136,8 @@ class LevelSolver {
       const Eigen::Vector3d nr(nv[0], nv[1], nv[2]);
       const Eigen::Vector3d V = c.backProject(ui, vi, zr);
       // both depths are noisy: the sigma of the difference of two readings at about this depth
-      const double sigma = std::sqrt(2.0) * m_p.depth_noise * P.z() * P.z();
-      add(jacobian(P, nr), nr.dot(P - V), sigma, m_geometric_weight);
+      const double inv_sigma = iz * iz / (std::sqrt(2.0) * m_p.depth_noise);
+      add(jacobian(P, nr), nr.dot(P - V), inv_sigma, m_geometric_weight);
       ++n.geometric;
       n.normals.noalias() += nr * nr.transpose();
     });
@@ -151,8 +151,8 @@ class LevelSolver {
   }
 
  private:
-  // Calls f(P, u, v, ui, vi, z_ref, grey, geometric) for every current point that T moves into the
-  // reference image without landing in front of or behind the reference depth (occlusion
+  // Calls f(P, 1 / P.z, u, v, ui, vi, z_ref, grey, geometric) for every current point that T moves
+  // into the reference image without landing in front of or behind the reference depth (occlusion
   // gate; unknown reference depth passes, for the photometric term).
   template <class F>
   void forEachPair(const Eigen::Isometry3d& T, F f) const {
@@ -160,12 +160,13 @@ class LevelSolver {
     for (const auto& pt : m_points) {
       const Eigen::Vector3d P = T * pt.P;
       if (P.z() <= 0) continue;
-      const double u = c.fx * P.x() / P.z() + c.cx, v = c.fy * P.y() / P.z() + c.cy;
+      const double iz = 1 / P.z();
+      const double u = c.fx * P.x() * iz + c.cx, v = c.fy * P.y() * iz + c.cy;
       if (!(u >= 0 && v >= 0 && u < c.width - 1 && v < c.height - 1)) continue;
       const int ui = static_cast<int>(u + 0.5), vi = static_cast<int>(v + 0.5);
       const float zr = m_ref.depth.at<float>(vi, ui);
       if (std::abs(zr - P.z()) > m_p.max_depth_difference) continue;  // false for NaN
-      f(P, u, v, ui, vi, zr, pt.grey, pt.geometric);
+      f(P, iz, u, v, ui, vi, zr, pt.grey, pt.geometric);
     }
   }
 

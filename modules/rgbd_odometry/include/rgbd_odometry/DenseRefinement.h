@@ -81,6 +81,9 @@ struct DenseLevel {
   cv::Mat depth;    //!< CV_32F, metres, NaN = unknown
   cv::Mat gx, gy;   //!< CV_32F, grey levels per pixel
   cv::Mat normals;  //!< CV_32FC3, unit, towards the camera; NaN = unknown
+  /** CV_8U, 1 where a corner of the 2x2 cell at (u, v)..(u + 1, v + 1) has a gradient of at
+   * least min_gradient: elsewhere no bilinear sample can reach it (a shortcut, same result) */
+  cv::Mat textured;
 };
 
 /** Levels from the finest used (index 0) to the coarsest. */
@@ -89,6 +92,11 @@ struct DensePyramid {
 };
 
 DensePyramid buildDensePyramid(const RgbdImage& image, const DenseParams& params);
+
+/** Adds the level's gradients, textured cells and normals, made from its grey and depth. Only a
+ * reference needs them: a pyramid stored for later use may drop them (72 % of its memory) and
+ * have them added again when it becomes a reference. */
+void addDerivatives(DenseLevel& level, const DenseParams& params);
 
 /** Result of refineDense(). */
 struct DenseResult {
