@@ -99,6 +99,8 @@ class KeyframeSlam {
   /** Older keyframes that look like keyframe `id`, most alike first. */
   std::vector<std::size_t> alike(std::size_t id) const;
   std::optional<PoseGraphEdge> verify(std::size_t id, std::size_t candidate);
+  /** Keyframe `id` ready to be a registration's reference (its pyramids' derivatives made). */
+  Frame& reference(std::size_t id);
   void applyOptimization(RgbdOdometry& tracker);
   /** Makes the graph's poses and loops the latest optimisation (under m_mutex). */
   void publish();
@@ -116,6 +118,9 @@ class KeyframeSlam {
   // worker (the graph, the keyframes and the registration); m_mutex guards what both touch
   std::unique_ptr<Registration> m_registration;
   std::vector<std::shared_ptr<Frame>> m_keyframes;
+  /** The last keyframes made references, the most recent first: consecutive keyframes mostly
+   * have the same candidates */
+  std::deque<std::pair<std::size_t, std::shared_ptr<Frame>>> m_references;
   std::optional<Vocabulary> m_vocabulary;
   std::vector<BowVector> m_words;  //!< per keyframe (empty without ORB features)
   std::vector<double> m_path;      //!< [m] per keyframe: path from the first (+ 1.5 m x angle)
