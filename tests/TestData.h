@@ -18,29 +18,34 @@ inline std::string sharedDataDir() {
   return std::filesystem::is_directory(p) ? std::filesystem::canonical(p).string() : "";
 }
 
-/** A fresh, empty temporary folder for one test, private to this process (two checkouts or two
- * ctest runs on one machine never share it). */
-inline std::string tempDir(const std::string& name) {
-  const auto p = std::filesystem::temp_directory_path() /
-                 ("hrgbd_test_" + name + "_" + std::to_string(::getpid()));
-  std::filesystem::remove_all(p);
-  std::filesystem::create_directories(p);
-  return p.string();
-}
+/** Temporary folders removed when the test program exits normally: every one marked `always`,
+ * the others only when every test passed (a failure's files stay to be looked at). */
+struct TempDirs {
+  std::vector<std::pair<std::string, bool>> dirs;  //!< (folder, always)
+  ~TempDirs() {
+    const bool passed = ::testing::UnitTest::GetInstance()->Passed();
+    std::error_code ignored;
+    for (const auto& [d, always] : dirs)
+      if (always || passed) std::filesystem::remove_all(d, ignored);
+  }
+  static std::string add(const std::string& name, bool always) {
+    static TempDirs all;
+    const auto p = std::filesystem::temp_directory_path() /
+                   ("hrgbd_test_" + name + "_" + std::to_string(::getpid()));
+    std::filesystem::remove_all(p);
+    std::filesystem::create_directories(p);
+    all.dirs.emplace_back(p.string(), always);
+    return p.string();
+  }
+};
 
-/** A tempDir() that is removed when the test program exits normally, for tests that write large
- * files (recordings of tens of MB). */
-inline std::string scratchDir(const std::string& name) {
-  struct Cleanup {
-    std::vector<std::string> dirs;
-    ~Cleanup() {
-      for (const auto& d : dirs) std::filesystem::remove_all(d);
-    }
-  };
-  static Cleanup cleanup;
-  cleanup.dirs.push_back(tempDir(name));
-  return cleanup.dirs.back();
-}
+/** A fresh, empty temporary folder for one test, private to this process (two checkouts or two
+ * ctest runs on one machine never share it); removed at exit if every test passed. */
+inline std::string tempDir(const std::string& name) { return TempDirs::add(name, false); }
+
+/** A tempDir() that is removed at exit in any case, for tests that write large files
+ * (recordings of tens of MB). */
+inline std::string scratchDir(const std::string& name) { return TempDirs::add(name, true); }
 
 }  // namespace hrgbd::test
 
