@@ -59,19 +59,40 @@ std::shared_ptr<Frame> keptForLoops(const Frame& keyframe) {
   return f;
 }
 
+std::size_t bytes(const cv::Mat& m) { return m.total() * m.elemSize(); }
+std::size_t bytes(const FeatureSet& f) {
+  return f.keypoints.size() * sizeof(cv::KeyPoint) + bytes(f.descriptors) +
+         f.points.size() * sizeof(Eigen::Vector3d);
+}
+
+/** [bytes] a kept keyframe's images, features and pyramids */
+std::size_t keptBytes(const Frame& f) {
+  std::size_t n = bytes(f.image.grey) + bytes(f.image.depth);
+  if (f.orb) n += bytes(*f.orb);
+  if (f.geometric)
+    n += bytes(f.geometric->features) +
+         (f.geometric->cloud.size() + f.geometric->normals.size()) * sizeof(Eigen::Vector3f);
+  if (f.dense)
+    for (const auto& l : f.dense->levels)
+      n += bytes(l.grey) + bytes(l.depth) + bytes(l.gx) + bytes(l.gy) + bytes(l.normals) +
+           bytes(l.textured);
+  return n;
+}
+
 constexpr std::size_t kReferences = 8;  //!< keyframes kept as references: 2.1 MB each
 
 }  // namespace
 
 std::string toText(const SlamStats& s) {
   std::ostringstream out;
-  out << std::fixed << std::setprecision(1) << "SLAM: " << s.keyframes << " keyframes, "
-      << s.candidates << " loop candidates verified (" << s.by_appearance << " by appearance), "
-      << s.loops_accepted << " loops accepted (" << s.appearance_loops << " by appearance), "
-      << s.loops_dropped << " dropped as inconsistent; loop search median "
-      << percentile(s.search_ms, 0.5) << " ms per keyframe, " << s.optimizations
-      << " optimisations, median " << percentile(s.optimize_ms, 0.5) << " ms; largest backlog "
-      << s.largest_backlog << " keyframes, tracking waited " << s.backlog_waits << " times\n";
+  out << std::fixed << std::setprecision(1) << "SLAM: " << s.keyframes << " keyframes ("
+      << s.kept_bytes / 1e6 << " MB kept), " << s.candidates << " loop candidates verified ("
+      << s.by_appearance << " by appearance), " << s.loops_accepted << " loops accepted ("
+      << s.appearance_loops << " by appearance), " << s.loops_dropped
+      << " dropped as inconsistent; loop search median " << percentile(s.search_ms, 0.5)
+      << " ms per keyframe, " << s.optimizations << " optimisations, median "
+      << percentile(s.optimize_ms, 0.5) << " ms; largest backlog " << s.largest_backlog
+      << " keyframes, tracking waited " << s.backlog_waits << " times\n";
   return out.str();
 }
 
@@ -192,6 +213,7 @@ void KeyframeSlam::work() {
 
 void KeyframeSlam::process(Job job) {
   const std::size_t id = job.id;
+  const std::size_t kept = keptBytes(*job.frame);
   m_keyframes.push_back(std::move(job.frame));
   const auto& orb = m_keyframes.back()->orb;
   m_words.push_back(m_vocabulary && orb ? m_vocabulary->transform(orb->descriptors) : BowVector{});
@@ -221,6 +243,7 @@ void KeyframeSlam::process(Job job) {
   if (accepted > 0) opt = m_graph.optimize(m_params.loop_max_chi2, m_params.optimizer_iterations);
   std::lock_guard<std::mutex> lock(m_mutex);
   m_stats.keyframes = m_graph.nodes();
+  m_stats.kept_bytes += kept;
   m_stats.candidates += verified;
   m_stats.by_appearance += by_appearance;
   m_stats.loops_accepted += accepted;

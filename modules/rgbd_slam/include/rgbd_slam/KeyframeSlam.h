@@ -41,13 +41,14 @@ struct SlamStats {
   std::size_t optimizations = 0;
   std::size_t largest_backlog = 0;  //!< most keyframes ever waiting for the loop search
   std::size_t backlog_waits = 0;    //!< times the tracking waited for it (max_backlog reached)
+  std::size_t kept_bytes = 0;       //!< what the kept keyframes hold: images, features, pyramids
   std::vector<double> search_ms;    //!< [ms] loop search and verification, per keyframe with
                                     //!< candidates
   std::vector<double> optimize_ms;  //!< [ms] per optimisation
 };
 
-/** "SLAM: N keyframes, ... loops ..., search ms median ..., optimisation ms median ...; largest
- * backlog ..., tracking waited ... times\n" */
+/** "SLAM: N keyframes (M MB kept), ... loops ..., search ms median ..., optimisation ms median ...;
+ * largest backlog ..., tracking waited ... times\n" */
 std::string toText(const SlamStats& s);
 
 class KeyframeSlam {
