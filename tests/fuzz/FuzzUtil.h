@@ -15,7 +15,7 @@
 namespace hrgbd::fuzz {
 
 /** "<tmp>/hrgbd_fuzz_<pid>_<name>", the same path on every call of one process; removed when
- * the process exits normally (a crash leaves it, next to libFuzzer's crash file). */
+ * the process exits normally (a crash leaves it in the temporary folder). */
 inline std::string tempPath(const std::string& name) {
   struct Removed {
     std::vector<std::string> paths;

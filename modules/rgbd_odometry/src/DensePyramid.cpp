@@ -63,8 +63,8 @@ cv::Mat depthNormals(const cv::Mat& depth, const PinholeCamera& cam, double max_
   return n;
 }
 
-// 1 where a corner of the 2x2 cell has a gradient of at least `min_gradient`: a bilinear sample
-// of the gradient is a convex combination of the corners', never longer than the longest.
+// Non-zero where a corner of the 2x2 cell has a gradient of at least `min_gradient`: a bilinear
+// sample of the gradient is a convex combination of the corners', never longer than the longest.
 cv::Mat texturedCells(const cv::Mat& gx, const cv::Mat& gy, double min_gradient) {
   // (a margin of 1e-4 for the rounding of the float samples)
   cv::Mat strong = gx.mul(gx) + gy.mul(gy) >= min_gradient * min_gradient * (1 - 1e-4);
@@ -93,6 +93,7 @@ void addDerivatives(DenseLevel& level, const DenseParams& params) {
   cv::Sobel(level.grey, level.gx, CV_32F, 1, 0, 1, 0.5);  // central differences
   cv::Sobel(level.grey, level.gy, CV_32F, 0, 1, 1, 0.5);
   level.textured = texturedCells(level.gx, level.gy, params.min_gradient);
+  level.textured_gradient = params.min_gradient;
   level.normals = depthNormals(level.depth, level.cam, params.max_depth_difference);
 }
 

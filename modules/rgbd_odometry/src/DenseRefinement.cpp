@@ -34,7 +34,7 @@ struct Bilinear {
 
 // Jacobian of a residual whose derivative with respect to the moved point P is g, for a left
 // perturbation exp(delta) T with delta = (translation, rotation).
-inline Vector6d jacobian(const Eigen::Vector3d& P, const Eigen::Vector3d& g) {
+Vector6d jacobian(const Eigen::Vector3d& P, const Eigen::Vector3d& g) {
   Vector6d J;
   J << g, P.cross(g);
   return J;
@@ -84,7 +84,8 @@ class LevelSolver {
         m_points(currentPoints(cur, stride)),
         m_geometric_points(static_cast<std::size_t>(std::count_if(
             m_points.begin(), m_points.end(), [](const auto& q) { return q.geometric; }))),
-        m_geometric_weight(p.geometric_weight * stride * stride) {}
+        m_geometric_weight(p.geometric_weight * stride * stride),
+        m_skip_untextured(!ref.textured.empty() && p.min_gradient >= ref.textured_gradient) {}
 
   // Photometric noise scale at T: 1.4826 x the median absolute residual (at least one level).
   double photometricSigma(const Eigen::Isometry3d& T) const {
@@ -118,10 +119,13 @@ class LevelSolver {
     };
     const auto& c = m_ref.cam;
     const double inv_photo_sigma = 1 / photo_sigma;
+    // 1 / the sigma of a point-to-plane residual at 1 m (below)
+    const double inv_depth_sigma = 1 / (std::sqrt(2.0) * m_p.depth_noise);
     forEachPair(T, [&](const Eigen::Vector3d& P, double iz, double u, double v, int ui, int vi,
                        float zr, float grey, bool geometric) {
       const Bilinear at(m_ref.grey, u, v);
-      if (m_p.photometric_weight > 0 && m_ref.textured.at<uchar>(at.v0, at.u0)) {
+      if (m_p.photometric_weight > 0 &&
+          (!m_skip_untextured || m_ref.textured.at<uchar>(at.v0, at.u0))) {
         const double gx = at(m_ref.gx), gy = at(m_ref.gy);
         if (gx * gx + gy * gy >= m_p.min_gradient * m_p.min_gradient) {
           const Eigen::Vector3d g(gx * c.fx * iz, gy * c.fy * iz,
@@ -136,7 +140,7 @@ class LevelSolver {
       const Eigen::Vector3d nr(nv[0], nv[1], nv[2]);
       const Eigen::Vector3d V = c.backProject(ui, vi, zr);
       // both depths are noisy: the sigma of the difference of two readings at about this depth
-      const double inv_sigma = iz * iz / (std::sqrt(2.0) * m_p.depth_noise);
+      const double inv_sigma = iz * iz * inv_depth_sigma;
       add(jacobian(P, nr), nr.dot(P - V), inv_sigma, m_geometric_weight);
       ++n.geometric;
       n.normals.noalias() += nr * nr.transpose();
@@ -176,6 +180,8 @@ class LevelSolver {
   std::size_t m_geometric_points = 0;  //!< of them, with a point-to-plane term
   /** each point-to-plane pair stands for stride^2 pixels: the terms keep their balance */
   double m_geometric_weight = 0;
+  /** the reference's textured cells were made for this min_gradient or a lower one */
+  bool m_skip_untextured = false;
 };
 
 Eigen::Isometry3d expSe3(const Vector6d& d) {

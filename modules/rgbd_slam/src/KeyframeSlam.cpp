@@ -79,7 +79,7 @@ std::size_t keptBytes(const Frame& f) {
   return n;
 }
 
-constexpr std::size_t kReferences = 8;  //!< keyframes kept as references: 2.1 MB each
+constexpr std::size_t kReferences = 8;  //!< keyframes kept as references: 2-3 MB each
 
 }  // namespace
 
@@ -349,7 +349,8 @@ Frame& KeyframeSlam::reference(std::size_t id) {
   auto it = std::find_if(m_references.begin(), m_references.end(),
                          [&](const auto& r) { return r.first == id; });
   if (it == m_references.end()) {
-    // a copy that shares the kept data, and its pyramids' derivatives made again
+    // a copy (sharing the kept images and pyramids, its feature vectors copied) whose pyramids
+    // get their derivatives again
     auto f = std::make_shared<Frame>(*m_keyframes[id]);
     if (f->dense)
       for (auto& level : f->dense->levels) addDerivatives(level, m_odometry.dense);

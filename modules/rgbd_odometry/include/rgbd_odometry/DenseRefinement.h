@@ -74,16 +74,18 @@ struct DenseParams : public Params<DenseParams> {
 };
 
 /** One pyramid level: intensity, depth (NaN = unknown, never blended into known depth), the
- * intensity gradients and the normals of the depth (NaN where unknown). */
+ * intensity gradients, the normals of the depth (NaN where unknown) and the textured cells. */
 struct DenseLevel {
   PinholeCamera cam;
   cv::Mat grey;     //!< CV_32F, grey levels
   cv::Mat depth;    //!< CV_32F, metres, NaN = unknown
   cv::Mat gx, gy;   //!< CV_32F, grey levels per pixel
   cv::Mat normals;  //!< CV_32FC3, unit, towards the camera; NaN = unknown
-  /** CV_8U, 1 where a corner of the 2x2 cell at (u, v)..(u + 1, v + 1) has a gradient of at
-   * least min_gradient: elsewhere no bilinear sample can reach it (a shortcut, same result) */
+  /** CV_8U, non-zero where a corner of the 2x2 cell at (u, v)..(u + 1, v + 1) has a gradient
+   * of at least `textured_gradient` (less 0.01 % for rounding): elsewhere no bilinear sample of
+   * the gradient reaches it, and the refinement skips the cell (a shortcut, the same result) */
   cv::Mat textured;
+  double textured_gradient = 0;  //!< [grey levels/px] the min_gradient it was made with
 };
 
 /** Levels from the finest used (index 0) to the coarsest. */
