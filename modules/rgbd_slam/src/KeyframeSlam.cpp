@@ -7,29 +7,18 @@
 #include <iomanip>
 #include <sstream>
 
+#include "SlamCommon.h"
 #include "rgbd_core/Config.h"
 #include "rgbd_core/Timing.h"
 #include "rgbd_eval/Evaluate.h"
 #include "rgbd_odometry/RigidFit.h"
 
 namespace hrgbd {
+
+using slam::fitInformation;
+using slam::viewDistance;
+
 namespace {
-
-double angleRad(const mrpt::poses::CPose3D& d) {
-  return Eigen::AngleAxisd(toIsometry(d).rotation()).angle();
-}
-
-constexpr double kLever = 1.5;  // [m] typical depth: rotation sigma = translation sigma / lever
-
-/** [m] how far apart two views are: the translation plus the rotation over the lever arm */
-double viewDistance(const mrpt::poses::CPose3D& d) { return d.norm() + kLever * angleRad(d); }
-
-/** Information of a registration on `inliers` sparse inliers (dense-only: as 10). */
-mrpt::math::CMatrixDouble66 fitInformation(const SlamParams& p, std::size_t inliers, bool loop) {
-  const double sigma = p.edge_sigma * std::sqrt(100.0 / std::max<double>(inliers, 10)) *
-                       (loop ? p.loop_sigma_factor : 1.0);
-  return edgeInformation(sigma, sigma / kLever);
-}
 
 /** The tracking's parameters with the loops' weight of the point-to-plane term, and without the
  * geometric fallback of a weak photometric registration: a loop needs loop_min_inliers, and the
@@ -78,8 +67,6 @@ std::size_t keptBytes(const Frame& f) {
            bytes(l.textured);
   return n;
 }
-
-constexpr std::size_t kReferences = 8;  //!< keyframes kept as references: 2-3 MB each
 
 }  // namespace
 
@@ -264,102 +251,6 @@ void KeyframeSlam::publish() {
   for (std::size_t i = 0; i < edges.size(); ++i)
     if (edges[i].loop && m_graph.active(i)) m_loops.push_back(edges[i]);
   ++m_optimizations;
-}
-
-std::vector<KeyframeSlam::Candidate> KeyframeSlam::candidates(std::size_t id) const {
-  const auto sep = static_cast<std::size_t>(m_params.loop_min_separation);
-  if (id < sep) return {};
-  const auto& here = m_graph.pose(id);
-  std::vector<std::pair<double, std::size_t>> near;  // (view distance, keyframe)
-  for (std::size_t j = 0; j + sep <= id; ++j) {
-    const auto d = (-m_graph.pose(j)) + here;
-    const double metres = d.norm(), angle = angleRad(d);
-    if (metres <= m_params.loop_search_radius &&
-        angle <= mrpt::DEG2RAD(m_params.loop_search_angle_deg))
-      near.emplace_back(viewDistance(d), j);
-  }
-  std::sort(near.begin(), near.end());
-  // the nearest views, then the most alike, spread over the sequence: each at least
-  // loop_min_separation keyframes from those already chosen
-  std::vector<Candidate> out;
-  auto take = [&](std::size_t j, bool by_appearance, std::size_t at_most) {
-    if (out.size() >= at_most) return;
-    if (std::all_of(out.begin(), out.end(), [&](const Candidate& c) {
-          return (j > c.keyframe ? j - c.keyframe : c.keyframe - j) >= sep;
-        }))
-      out.push_back({j, by_appearance});
-  };
-  const auto spatial = static_cast<std::size_t>(m_params.loop_max_candidates);
-  for (const auto& [score, j] : near) take(j, false, spatial);
-  // by appearance: only keyframes the graph puts outside the search window (after drift); those
-  // inside had their chance by position (more loops over the same views only add correlated
-  // errors: fr1/rpy 0.0146 -> 0.0159 m with them)
-  std::vector<bool> inside(id + 1, false);
-  for (const auto& [score, j] : near) inside[j] = true;
-  const std::size_t all =
-      out.size() + static_cast<std::size_t>(m_params.loop_appearance_candidates);
-  for (std::size_t j : alike(id))
-    if (!inside[j]) take(j, true, all);
-  return out;
-}
-
-std::vector<std::size_t> KeyframeSlam::alike(std::size_t id) const {
-  const auto sep = static_cast<std::size_t>(m_params.loop_min_separation);
-  if (m_words[id].empty() || id < sep) return {};
-  // DBoW2's normalised score: relative to the keyframe's score with the one before it
-  const double expected = bowScore(m_words[id], m_words[id - 1]);
-  if (expected <= 0) return {};
-  std::vector<std::pair<double, std::size_t>> scored;
-  for (std::size_t j = 0; j + sep <= id; ++j) {
-    const double s = bowScore(m_words[id], m_words[j]) / expected;
-    if (s >= m_params.loop_min_appearance) scored.emplace_back(-s, j);
-  }
-  std::sort(scored.begin(), scored.end());
-  std::vector<std::size_t> out;
-  for (const auto& [s, j] : scored) out.push_back(j);
-  return out;
-}
-
-std::optional<PoseGraphEdge> KeyframeSlam::verify(std::size_t id, std::size_t candidate) {
-  // The graph's prediction is a second start of the dense refinement (it wins over a poorer
-  // sparse fit: fr1/rpy's largest loop error 8.4 -> 4.7 cm), but a loop needs a sparse fit that
-  // succeeded: the refinement from the prediction alone only repeats the graph (such results
-  // came back as loops up to 13 cm off on fr1/rpy).
-  const mrpt::poses::CPose3D predicted = (-m_graph.pose(candidate)) + m_graph.pose(id);
-  Frame& cur = *m_keyframes[id];  // the worker's own: the guess is set for this attempt only
-  cur.guess = toIsometry(predicted);
-  const RegistrationResult reg = m_registration->align(cur, reference(candidate));
-  cur.guess.reset();
-  if (!reg.ok() || !reg.sparse_ok ||
-      reg.inliers < static_cast<std::size_t>(m_params.loop_min_inliers))
-    return std::nullopt;
-  const mrpt::poses::CPose3D measured = toPose(reg.T);
-  const auto d = (-predicted) + measured;
-  // where the graph puts it, give or take the odometry's drift between the two
-  // [m], at most the search radius: beyond that the inliers and the chi-square check decide
-  const double drift =
-      std::min(m_params.loop_drift * (m_path[id] - m_path[candidate]), m_params.loop_search_radius);
-  if (d.norm() > m_params.loop_max_discrepancy + drift ||
-      angleRad(d) > mrpt::DEG2RAD(m_params.loop_max_discrepancy_deg) + drift / kLever)
-    return std::nullopt;
-  return PoseGraphEdge{candidate, id, measured, fitInformation(m_params, reg.inliers, true), true};
-}
-
-Frame& KeyframeSlam::reference(std::size_t id) {
-  auto it = std::find_if(m_references.begin(), m_references.end(),
-                         [&](const auto& r) { return r.first == id; });
-  if (it == m_references.end()) {
-    // a copy (sharing the kept images and pyramids, its feature vectors copied) whose pyramids
-    // get their derivatives again
-    auto f = std::make_shared<Frame>(*m_keyframes[id]);
-    if (f->dense)
-      for (auto& level : f->dense->levels) addDerivatives(level, m_odometry.dense);
-    m_references.emplace_front(id, std::move(f));
-    if (m_references.size() > kReferences) m_references.pop_back();
-    return *m_references.front().second;
-  }
-  if (it != m_references.begin()) std::rotate(m_references.begin(), it, it + 1);
-  return *m_references.front().second;
 }
 
 void KeyframeSlam::flush() {

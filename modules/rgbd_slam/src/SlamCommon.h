@@ -1,0 +1,36 @@
+#pragma once
+// What the keyframe graph's bookkeeping (KeyframeSlam.cpp) and its loop search (LoopSearch.cpp)
+// share: how far apart two views are, and the information of a registration.
+#include <mrpt/math/CMatrixFixed.h>
+#include <mrpt/poses/CPose3D.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "rgbd_odometry/RigidFit.h"
+#include "rgbd_slam/PoseGraph.h"
+#include "rgbd_slam/SlamParams.h"
+
+namespace hrgbd::slam {
+
+inline double angleRad(const mrpt::poses::CPose3D& d) {
+  return Eigen::AngleAxisd(toIsometry(d).rotation()).angle();
+}
+
+inline constexpr double kLever =
+    1.5;  // [m] typical depth: rotation sigma = translation sigma / lever
+
+/** [m] how far apart two views are: the translation plus the rotation over the lever arm */
+inline double viewDistance(const mrpt::poses::CPose3D& d) {
+  return d.norm() + kLever * angleRad(d);
+}
+
+/** Information of a registration on `inliers` sparse inliers (dense-only: as 10). */
+inline mrpt::math::CMatrixDouble66 fitInformation(const SlamParams& p, std::size_t inliers,
+                                                  bool loop) {
+  const double sigma = p.edge_sigma * std::sqrt(100.0 / std::max<double>(inliers, 10)) *
+                       (loop ? p.loop_sigma_factor : 1.0);
+  return edgeInformation(sigma, sigma / kLever);
+}
+
+}  // namespace hrgbd::slam
