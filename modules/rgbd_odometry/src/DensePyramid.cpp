@@ -97,6 +97,10 @@ void addDerivatives(DenseLevel& level, const DenseParams& params) {
   level.normals = depthNormals(level.depth, level.cam, params.max_depth_difference);
 }
 
+void dropDerivatives(DenseLevel& level) {
+  level.gx.release(), level.gy.release(), level.normals.release(), level.textured.release();
+}
+
 DensePyramid buildDensePyramid(const RgbdImage& image, const DenseParams& params) {
   DenseLevel level;
   level.cam = image.cam;

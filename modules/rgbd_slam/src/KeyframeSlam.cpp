@@ -43,8 +43,7 @@ std::shared_ptr<Frame> keptForLoops(const Frame& keyframe) {
   f->peer.reset();
   if (f->orb || f->geometric) f->image.grey.release(), f->image.depth.release();
   if (f->dense)
-    for (auto& level : f->dense->levels)
-      level.gx.release(), level.gy.release(), level.normals.release(), level.textured.release();
+    for (auto& level : f->dense->levels) dropDerivatives(level);
   return f;
 }
 

@@ -99,6 +99,8 @@ DensePyramid buildDensePyramid(const RgbdImage& image, const DenseParams& params
  * reference needs them: a pyramid stored for later use may drop them (72 % of its memory) and
  * have them added again when it becomes a reference. */
 void addDerivatives(DenseLevel& level, const DenseParams& params);
+/** Releases what addDerivatives() adds: the level keeps its camera, grey and depth. */
+void dropDerivatives(DenseLevel& level);
 
 /** Result of refineDense(). */
 struct DenseResult {
