@@ -258,15 +258,16 @@ std::string toMarkdown(const BenchmarkReport& r) {
 std::string toCsv(const BenchmarkReport& r) {
   std::ostringstream out;
   out << "sequence,method,frames,registered,ate_mean_unaligned,ate_rmse,rpe_trans,rpe_rot,"
-         "ms_median,ms_p95,error\n";
+         "end_to_start_trans,end_to_start_rot,ms_median,ms_p95,error\n";
   for (const auto& run : r.runs) {
     const auto& s = run.summary;
     auto v = [&](double EvalResult::*f) { return fmt(evaluated(run, f), 6); };
     out << run.sequence << "," << run.method << "," << s.frames << "," << s.registered << ","
         << v(&EvalResult::ate_mean_unaligned) << "," << v(&EvalResult::ate_rmse) << ","
-        << v(&EvalResult::rpe_trans) << "," << v(&EvalResult::rpe_rot) << "," << std::fixed
-        << std::setprecision(3) << s.median_ms << "," << s.p95_ms << "," << csvField(run.error)
-        << "\n";
+        << v(&EvalResult::rpe_trans) << "," << v(&EvalResult::rpe_rot) << ","
+        << v(&EvalResult::end_to_start_trans) << "," << v(&EvalResult::end_to_start_rot) << ","
+        << std::fixed << std::setprecision(3) << s.median_ms << "," << s.p95_ms << ","
+        << csvField(run.error) << "\n";
   }
   return out.str();
 }

@@ -86,7 +86,9 @@ void requireFinite(const EvalResult& r) {
   const std::pair<const char*, double> figures[] = {{"ATE RMSE", r.ate_rmse},
                                                     {"unaligned ATE", r.ate_mean_unaligned},
                                                     {"RPE translation", r.rpe_trans},
-                                                    {"RPE rotation", r.rpe_rot}};
+                                                    {"RPE rotation", r.rpe_rot},
+                                                    {"end-to-start error", r.end_to_start_trans},
+                                                    {"end-to-start rotation", r.end_to_start_rot}};
   for (const auto& [name, value] : figures)
     if (!std::isfinite(value))
       throw std::runtime_error(std::string("the ") + name + " is not finite (" +
@@ -150,6 +152,11 @@ EvalResult evaluateTrajectory(const Trajectory& ground_truth, const Trajectory& 
 
   // (3) RPE.
   computeRpe(r.t, gt, est, params.rpe_delta, r);
+
+  // (4) End to start: the RPE's error over the single interval first -> last.
+  const auto end_error = (est.back().pose - est.front().pose) - (gt.back().pose - gt.front().pose);
+  r.end_to_start_trans = end_error.translation().norm();
+  r.end_to_start_rot = rotationAngleDeg(end_error);
   r.ground_truth = gt;
   requireFinite(r);
   return r;
@@ -170,7 +177,9 @@ std::string toJson(const EvalResult& r) {
          ", \"rpe_rot\": " + (rpe ? number(r.rpe_rot, "%.6f") : "null") +
          ", \"pairs\": " + std::to_string(r.pairs) +
          ", \"rpe_delta\": " + number(r.rpe_delta_used, "%.3f") +
-         ", \"rpe_pairs\": " + std::to_string(r.rpe_pairs) + "}";
+         ", \"rpe_pairs\": " + std::to_string(r.rpe_pairs) +
+         ", \"end_to_start_trans\": " + number(r.end_to_start_trans, "%.6f") +
+         ", \"end_to_start_rot\": " + number(r.end_to_start_rot, "%.6f") + "}";
 }
 
 std::string toText(const EvalResult& r) {
@@ -178,8 +187,10 @@ std::string toText(const EvalResult& r) {
   std::snprintf(buf, sizeof(buf),
                 "pairs                 %zu\n"
                 "ATE RMSE (aligned)    %.4f m\n"
-                "ATE mean (unaligned)  %.4f m   (paper eq. 10, relative to the first pose)\n",
-                r.pairs, r.ate_rmse, r.ate_mean_unaligned);
+                "ATE mean (unaligned)  %.4f m   (paper eq. 10, relative to the first pose)\n"
+                "end-to-start error    %.4f m, %.3f deg (relative pose first -> last)\n",
+                r.pairs, r.ate_rmse, r.ate_mean_unaligned, r.end_to_start_trans,
+                r.end_to_start_rot);
   std::string out = buf;
   if (r.rpe_pairs == 0) {
     std::snprintf(buf, sizeof(buf),

@@ -24,6 +24,10 @@ struct EvalResult {
   double rpe_rot = 0;             //!< [deg/s] RPE rotation RMSE over rpe_delta_used
   double rpe_delta_used = 0;      //!< [s] interval actually used for RPE
   std::size_t rpe_pairs = 0;      //!< intervals that entered the RPE
+  /** Error of the relative pose from the first associated pose to the last: the drift over the
+   * whole run. On a camera path that returns to its start it is the loop-closure error. */
+  double end_to_start_trans = 0;  //!< [m]
+  double end_to_start_rot = 0;    //!< [deg]
   // Per associated pose, for plots: time, ground truth, aligned estimate, aligned error.
   std::vector<double> t;
   Trajectory ground_truth, estimate_aligned;
@@ -48,8 +52,9 @@ EvalResult evaluateTrajectory(const Trajectory& ground_truth, const Trajectory& 
                               const EvalParams& params = {});
 
 /** One JSON object with keys ate_rmse, ate_mean_unaligned, rpe_trans, rpe_rot, pairs,
- * rpe_delta, rpe_pairs; always valid JSON: rpe_trans and rpe_rot are null when rpe_pairs is 0,
- * and a figure that is not finite (none from evaluateTrajectory()) is null, never inf or nan. */
+ * rpe_delta, rpe_pairs, end_to_start_trans, end_to_start_rot; always valid JSON: rpe_trans and
+ * rpe_rot are null when rpe_pairs is 0, and a figure that is not finite (none from
+ * evaluateTrajectory()) is null, never inf or nan. */
 std::string toJson(const EvalResult& r);
 
 /** Human-readable summary, one figure per line ("RPE none: ..." when rpe_pairs is 0). */
