@@ -54,8 +54,8 @@ int main(int argc, char** argv) {
   TCLAP::SwitchArg far("", "far", "camera at ~2 m instead of ~1 m", cmd);
   ValueArg<int> frames("n", "frames", "number of frames (30)", false, 30, cmd.atLeast(1, "N"), cmd);
   ValueArg<int> seed("", "seed", "noise seed (1)", false, 1, "SEED", cmd);
-  ValueArg<std::string> motion("", "motion", "sweep, or a TUM trajectory to replay", false, "sweep",
-                               "FILE", cmd);
+  ValueArg<std::string> motion("", "motion", "sweep, loop, or a TUM trajectory to replay", false,
+                               "sweep", "FILE", cmd);
   ValueArg<std::string> rawlog("o", "rawlog", "output rawlog", false, "", "OUT.rawlog", cmd);
   ValueArg<std::string> tum("", "tum", "output TUM folder", false, "", "FOLDER", cmd);
   ValueArg<std::string> oni("", "oni", "output OpenNI recording", false, "", "OUT.oni", cmd);
@@ -87,7 +87,7 @@ int main(int argc, char** argv) {
         oni.getValue()};
     hrgbd::checkJobPaths(
         {{config.getValue(), "the configuration file (--config)"},
-         {p.motion == "sweep" ? "" : p.motion,
+         {hrgbd::sim::isProceduralMotion(p.motion) ? "" : p.motion,
           motion.isSet() ? "the motion file (--motion)" : "the motion file ([Simulator] motion)"}},
         hrgbd::sim::writtenFiles(outputs));
     hrgbd::ProgressParams pp;

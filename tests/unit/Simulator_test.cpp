@@ -174,3 +174,31 @@ TEST(Simulator, ReplayedMotionLooksAtTheScene) {
     EXPECT_LT(std::hypot(local.x, local.y) / local.z, 0.05);    // near the optical axis
   }
 }
+
+TEST(Simulator, TheLoopMotionReturnsToItsStart) {
+  // 90 frames at 30 Hz: one frame after the last the camera is back where it started, having
+  // orbited +-35 deg on the way; every pose looks at the scene's look_at.
+  SimParams p;
+  p.scene = "desk";
+  p.motion = "loop";
+  p.frames = 90;
+  const auto scene = makeScene(p.scene, false);
+  std::vector<double> times;
+  for (int i = 0; i <= p.frames; ++i) times.push_back(i / p.fps);
+  const auto path = cameraPath(scene, p, times);
+  ASSERT_EQ(path.size(), times.size());
+  EXPECT_LT((path.back().pose - path.front().pose).norm(), 1e-9);
+  double widest = 0;
+  const Eigen::Vector3d start(path[0].pose.x(), path[0].pose.y(), path[0].pose.z());
+  for (const auto& q : path) {
+    const Eigen::Vector3d eye(q.pose.x(), q.pose.y(), q.pose.z());
+    widest = std::max(
+        widest, std::acos(std::clamp(
+                    (eye - scene.look_at).normalized().dot((start - scene.look_at).normalized()),
+                    -1.0, 1.0)));
+    const auto local = q.pose.inverseComposePoint(
+        mrpt::math::TPoint3D(scene.look_at.x(), scene.look_at.y(), scene.look_at.z()));
+    EXPECT_LT(std::hypot(local.x, local.y) / local.z, 1e-6);  // on the optical axis
+  }
+  EXPECT_GT(mrpt::RAD2DEG(widest), 25.0);  // 35 deg of azimuth seen from above: 29.9
+}

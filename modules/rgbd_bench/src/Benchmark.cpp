@@ -28,7 +28,7 @@ namespace {
 
 // "fr1_xyz_groundtruth_per_rgb_frame.txt" -> "fr1_xyz"
 std::string motionName(const std::string& motion) {
-  if (motion == "sweep") return motion;
+  if (sim::isProceduralMotion(motion)) return motion;
   const auto stem = fs::path(motion).stem().string();
   return stem.substr(0, stem.find("_groundtruth"));
 }
@@ -73,7 +73,7 @@ std::vector<BenchSequence> prepareSequences(const BenchmarkParams& p,
                      (variant + "_" + motionName(motion) + "_n" + std::to_string(p.sim_frames) +
                       "_s" + std::to_string(p.sim_seed) + ".rawlog"))
                         .string();
-        if (motion != "sweep" && !fs::exists(motion)) {
+        if (!sim::isProceduralMotion(motion) && !fs::exists(motion)) {
           seq.skip_reason = "motion file not found: " + motion;
         } else if (!fs::exists(seq.input)) {
           sim::SimParams sp;
@@ -121,7 +121,7 @@ BenchmarkParams loadBenchmarkParams(const std::string& config_file) {
   p.output_folder = resolvePath(base, p.output_folder);
   p.paper_config = resolvePath(base, p.paper_config);
   for (auto& m : p.sim_motions)
-    if (m != "sweep") m = resolvePath(base, m);
+    if (!sim::isProceduralMotion(m)) m = resolvePath(base, m);
   for (auto& r : p.real_sequences) r = resolvePath(base, r);
   return p;
 }
@@ -202,7 +202,7 @@ void checkResultPaths(const BenchmarkParams& p, const std::string& config_file,
                       const std::vector<std::string>& extra) {
   std::vector<JobPath> inputs{{config_file, "the configuration file (--config)"}};
   for (const auto& m : p.sim_motions)
-    if (m != "sweep") inputs.push_back({m, "[Benchmark] sim_motions file"});
+    if (!sim::isProceduralMotion(m)) inputs.push_back({m, "[Benchmark] sim_motions file"});
   auto sequence = [&](const std::string& path, const std::string& name) {
     if (fs::is_directory(path)) {
       for (const auto* list : {"rgb.txt", "depth.txt", "groundtruth.txt"})

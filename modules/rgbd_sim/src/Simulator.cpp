@@ -51,6 +51,26 @@ Trajectory sweepPath(const Scene& scene, int seed, const std::vector<double>& ti
   return out;
 }
 
+/** A loop for SLAM: an orbit about look_at's vertical, +-35 deg, with the distance (+-12 %) and
+ * the elevation (+-5 deg) changing on the way, that returns to its start one frame after the
+ * last (`period` [s] = frames / fps). Smooth, without jitter, so that it closes exactly. */
+Trajectory loopPath(const Scene& scene, double period, const std::vector<double>& times) {
+  const Eigen::Vector3d view = scene.view_dir.normalized();
+  const double azimuth0 = std::atan2(view.y(), view.x()),
+               elevation0 = std::asin(std::clamp(view.z(), -1.0, 1.0));
+  Trajectory out;
+  for (double t : times) {
+    const double s = 2 * M_PI * (t - times.front()) / period;
+    const double azimuth = azimuth0 + mrpt::DEG2RAD(35.0) * std::sin(s),
+                 elevation = elevation0 + mrpt::DEG2RAD(5.0) * std::sin(2 * s),
+                 r = scene.distance * (1 + 0.12 * std::sin(3 * s));
+    const Eigen::Vector3d dir(std::cos(elevation) * std::cos(azimuth),
+                              std::cos(elevation) * std::sin(azimuth), std::sin(elevation));
+    out.push_back({t, lookAt(scene.look_at + r * dir, scene.look_at)});
+  }
+  return out;
+}
+
 /** The poses of the TUM trajectory `file` up to 0.1 s past the last of `times`, time stamps
  * made relative to its first. Throws when it is shorter than `times`. */
 Trajectory loadMotion(const std::string& file, const std::vector<double>& times) {
@@ -110,7 +130,9 @@ Trajectory replayPath(const Scene& scene, const std::string& file,
 }  // namespace
 
 Trajectory cameraPath(const Scene& scene, const SimParams& p, const std::vector<double>& times) {
-  return p.motion == "sweep" ? sweepPath(scene, p.seed, times) : replayPath(scene, p.motion, times);
+  if (p.motion == "sweep") return sweepPath(scene, p.seed, times);
+  if (p.motion == "loop") return loopPath(scene, p.frames / p.fps, times);
+  return replayPath(scene, p.motion, times);
 }
 
 Eigen::Vector3d lookedAtPoint(const Trajectory& path, double distance) {

@@ -29,7 +29,8 @@ struct BenchmarkParams : public Params<BenchmarkParams> {
   std::vector<std::string> sim_scenes{"texture", "structure", "structure_texture", "desk", "wall"};
   /** ... and also far (~2 m) for texture, structure and structure_texture, as in Table I. */
   bool sim_far = true;
-  /** "sweep" and/or TUM ground-truth files whose real hand-held motion is replayed. */
+  /** "sweep", "loop" (rgbd_sim::SimParams::motion) and/or TUM ground-truth files whose real
+   * hand-held motion is replayed. */
   std::vector<std::string> sim_motions{"sweep"};
   int sim_frames = 30;  //!< [count] frames per simulated sequence (30 Hz)
   int sim_seed = 1;     //!< simulator noise seed
@@ -47,7 +48,7 @@ struct BenchmarkParams : public Params<BenchmarkParams> {
                 OneOf{benchmarkMethods()}, NonEmpty{});
     HRGBD_PARAM(sim_scenes, "scene types, each near (~1 m)", OneOf{sim::sceneTypes()});
     HRGBD_PARAM(sim_far, "also far (~2 m) texture, structure, structure_texture");
-    HRGBD_PARAM(sim_motions, "sweep and/or TUM trajectory files to replay");
+    HRGBD_PARAM(sim_motions, "sweep, loop and/or TUM trajectory files to replay");
     HRGBD_PARAM(sim_frames, "[count] frames per simulated sequence (ATE needs 3 poses)",
                 Range::atLeast(3));
     HRGBD_PARAM(sim_seed, "simulator noise seed");

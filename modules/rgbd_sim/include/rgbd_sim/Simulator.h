@@ -22,8 +22,10 @@ struct SimParams : public Params<SimParams> {
   int frames = 30;             //!< [count]
   double fps = 30;             //!< [Hz]
   int seed = 1;                //!< noise and jitter seed (same seed, same sequence)
-  /** "sweep" (procedural sweep along the structure with hand-held jitter) or a TUM trajectory
-   * file whose motion is replayed, moved so that the point it looked at is the scene's look_at. */
+  /** "sweep" (procedural sweep along the structure with hand-held jitter), "loop" (an orbit of
+   * +-35 deg about the scene that returns to its start after the last frame: a loop to close) or
+   * a TUM trajectory file whose motion is replayed, moved so that the point it looked at is the
+   * scene's look_at. */
   std::string motion = "sweep";
   KinectModel sensor;  //!< its keys are in this section too
 
@@ -34,10 +36,15 @@ struct SimParams : public Params<SimParams> {
     HRGBD_PARAM(frames, "[count] frames to render", Range::atLeast(1));
     HRGBD_PARAM(fps, "[Hz] frame rate", Range::openClosed(0, 1000));
     HRGBD_PARAM(seed, "noise and jitter seed");
-    HRGBD_PARAM(motion, "sweep, or a TUM trajectory file to replay");
+    HRGBD_PARAM(motion, "sweep, loop, or a TUM trajectory file to replay");
     v.merge(p.sensor);  // the sensor model's keys are in the same section
   }
 };
+
+/** True for the motions the simulator makes itself ("sweep", "loop"); others are files. */
+inline bool isProceduralMotion(const std::string& motion) {
+  return motion == "sweep" || motion == "loop";
+}
 
 /** Camera trajectory (optical frame in the world) sampled at `times`. */
 Trajectory cameraPath(const Scene& scene, const SimParams& params,
