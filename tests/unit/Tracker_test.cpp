@@ -197,3 +197,40 @@ TEST(Tracker, FrameToFrameMakesEveryRegisteredFrameTheReference) {
   EXPECT_TRUE(run.results[2].keyframe);
   EXPECT_EQ(run.log.aligned.back(), std::make_pair(102.0, 101.0));
 }
+
+TEST(Tracker, AfterFailuresInARowAFlaggedFrameBecomesTheKeyframe) {
+  hrgbd::OdometryParams p;
+  p.keyframe_max_translation = 1;  // no keyframe by motion here
+  p.keyframe_after_failures = 3;
+  const auto fail = step(0, 0, Status::TooFewInliers);
+  // two failures, a registered frame (the count starts again), then three failures
+  const auto run = track({step(0.1), fail, fail, step(0.3), fail, fail, fail, step(0.05)}, p);
+  std::vector<bool> keyframes;
+  for (const auto& r : run.results) keyframes.push_back(r.keyframe);
+  EXPECT_EQ(keyframes,
+            (std::vector<bool>{true, false, false, false, false, false, false, true, false}));
+  // frame 107, the third failure in a row, is flagged at its constant-velocity prediction and
+  // is the keyframe there: 0.3 (frame 104, registered against 100) + 3 x 0.1 (the motion last
+  // measured between two registered frames, 100 -> 101)
+  EXPECT_EQ(run.results[7].status, Status::TooFewInliers);
+  EXPECT_FALSE(run.results[7].registered());
+  EXPECT_NEAR(x(run.results[7]), 0.6, 1e-12);
+  EXPECT_EQ(run.log.aligned.back(), std::make_pair(108.0, 107.0));
+  EXPECT_NEAR(x(run.results[8]), 0.65, 1e-12);
+
+  p.keyframe_after_failures = 0;  // never: frame 108 still registers against frame 100
+  const auto kept = track({step(0.1), fail, fail, step(0.3), fail, fail, fail, step(0.05)}, p);
+  EXPECT_FALSE(kept.results[7].keyframe);
+  EXPECT_EQ(kept.log.aligned.back(), std::make_pair(108.0, 100.0));
+  EXPECT_NEAR(x(kept.results[8]), 0.05, 1e-12);
+}
+
+TEST(Tracker, BaselinesNeverTakeAKeyframeAfterFailures) {
+  hrgbd::OdometryParams p;
+  p.method = hrgbd::Method::RansacIcp;
+  p.keyframe_after_failures = 1;
+  const auto fail = step(0, 0, Status::TooFewInliers);
+  const auto run = track({step(0.1), fail, fail, step(0.3)}, p);
+  EXPECT_FALSE(run.results[2].keyframe);
+  EXPECT_EQ(run.log.aligned.back(), std::make_pair(104.0, 101.0));
+}

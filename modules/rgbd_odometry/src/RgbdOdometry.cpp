@@ -66,13 +66,15 @@ RgbdOdometry::RgbdOdometry(const OdometryParams& params)
 RgbdOdometry::RgbdOdometry(const OdometryParams& params, std::unique_ptr<Registration> registration)
     : m_params(params), m_registration(std::move(registration)) {
   // the baselines and peers track frame to frame, as published
-  if (!isProductMethod(params.method)) m_params.keyframe_max_translation = 0;
+  if (!isProductMethod(params.method))
+    m_params.keyframe_max_translation = 0, m_params.keyframe_after_failures = 0;
 }
 
 void RgbdOdometry::reset() {
   m_ref.reset();
   m_pose = m_velocity = mrpt::poses::CPose3D();
   m_previous_registered = false;
+  m_failures = 0;
 }
 
 void RgbdOdometry::correct(const mrpt::poses::CPose3D& correction) {
@@ -104,9 +106,10 @@ FrameResult RgbdOdometry::track(const mrpt::obs::CObservation3DRangeScan& obs) {
   cur.guess = toIsometry((m_pose + m_velocity) - m_ref->pose);
   auto reg = m_registration->align(cur, m_ref->frame);
   report(reg, r);
-  if (!reg.ok()) return predict(std::move(r), reg.status, reg.detail);
+  if (!reg.ok()) return failed(std::move(cur), std::move(r), reg.status, reg.detail);
   if (auto why = implausible(reg.T))
-    return predict(std::move(r), FrameResult::Status::ImplausibleMotion, std::move(*why));
+    return failed(std::move(cur), std::move(r), FrameResult::Status::ImplausibleMotion,
+                  std::move(*why));
   // Line 16: G_n = G_ref T (eq. 8); this frame becomes the reference, or, tracking against a
   // keyframe, when the keyframe wears out.
   return accept(std::move(cur), m_ref->pose + toPose(reg.T), std::move(r), newKeyframe(reg));
@@ -125,8 +128,23 @@ FrameResult RgbdOdometry::predict(FrameResult r, FrameResult::Status why, std::s
   r.detail = std::move(detail);
   r.inlier_points.clear();
   m_previous_registered = false;
+  ++m_failures;
   if (m_params.on_failure == FailurePolicy::ConstantVelocity) m_pose = m_pose + m_velocity;
   r.pose = m_pose;
+  return r;
+}
+
+FrameResult RgbdOdometry::failed(Frame frame, FrameResult r, FrameResult::Status why,
+                                 std::string detail) {
+  r = predict(std::move(r), why, std::move(detail));
+  // the keyframe is out of reach (the camera moved on, or the keyframe was a poor one): this frame
+  // takes its place at the predicted pose; the error of that prediction stays in the trajectory,
+  // but the frames after it can register again
+  if (m_params.keyframe_after_failures > 0 && m_failures >= m_params.keyframe_after_failures) {
+    m_ref = Reference{std::move(frame), m_pose};
+    m_failures = 0;
+    r.keyframe = true;
+  }
   return r;
 }
 
@@ -145,6 +163,7 @@ FrameResult RgbdOdometry::accept(Frame frame, const mrpt::poses::CPose3D& pose, 
   // difference would carry the prediction's error into every later prediction)
   if (m_ref && m_previous_registered) m_velocity = pose - m_pose;
   m_previous_registered = true;
+  m_failures = 0;
   m_pose = pose;
   if (keyframe) m_ref = Reference{std::move(frame), pose};
   r.pose = m_pose;

@@ -16,6 +16,7 @@
 namespace hrgbd {
 
 using slam::fitInformation;
+using slam::predictedInformation;
 using slam::viewDistance;
 
 namespace {
@@ -115,16 +116,17 @@ void KeyframeSlam::rethrowWorkerFailure() {
 
 bool KeyframeSlam::add(FrameResult& r, RgbdOdometry& tracker) {
   rethrowWorkerFailure();
-  if (r.keyframe && r.registered() && tracker.keyframe()) {
+  if (r.keyframe && tracker.keyframe()) {  // registered, or taken after failures
     Job job;
     job.id = m_tracker_kf.size();
     job.frame = keptForLoops(*tracker.keyframe());
     job.pose = r.pose;
     job.first = m_tracker_kf.empty();
     if (!job.first)
-      job.odometry = PoseGraphEdge{m_tracker_kf.size() - 1, m_tracker_kf.size(),
-                                   (-m_tracker_kf.back()) + r.pose,
-                                   fitInformation(m_params, r.inliers, false), false};
+      job.odometry = PoseGraphEdge{
+          m_tracker_kf.size() - 1, m_tracker_kf.size(), (-m_tracker_kf.back()) + r.pose,
+          r.registered() ? fitInformation(m_params, r.inliers, false) : predictedInformation(),
+          false};
     m_tracker_kf.push_back(r.pose);
     m_keyframe_frame.push_back(m_places.size());
     if (m_params.background) {

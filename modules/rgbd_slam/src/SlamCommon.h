@@ -33,4 +33,10 @@ inline mrpt::math::CMatrixDouble66 fitInformation(const SlamParams& p, std::size
   return edgeInformation(sigma, sigma / kLever);
 }
 
+/** Information of the edge to a keyframe the tracker took after failures, at a predicted pose:
+ * 0.5 m and 19 deg, enough to keep the graph connected and for loops to place it. */
+inline mrpt::math::CMatrixDouble66 predictedInformation() {
+  return edgeInformation(0.5, 0.5 / kLever);
+}
+
 }  // namespace hrgbd::slam

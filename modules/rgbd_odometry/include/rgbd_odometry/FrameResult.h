@@ -41,8 +41,10 @@ struct FrameResult {
   double scale = 0;                                    //!< [m] estimator noise scale
   /** [m] the current frame's inlier features (optical frame), for display; empty on failure */
   std::vector<Eigen::Vector3f> inlier_points;
-  bool keyframe = false;  //!< registered and became the reference for the next frames
-  StageTimes ms;          //!< [ms] per stage
+  /** became the reference for the next frames: registered, or flagged after
+   * keyframe_after_failures flagged frames in a row (at its predicted pose) */
+  bool keyframe = false;
+  StageTimes ms;  //!< [ms] per stage
   bool registered() const { return status == Status::Ok || status == Status::FirstFrame; }
 };
 const char* toString(FrameResult::Status s);

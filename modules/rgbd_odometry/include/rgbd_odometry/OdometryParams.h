@@ -94,10 +94,14 @@ struct OdometryParams : public Params<OdometryParams> {
   double keyframe_max_translation = 0.05;
   double keyframe_max_rotation_deg = 3;  //!< [deg] ... or once it has turned this much
   int keyframe_min_inliers = 0;          //!< [count] ... or was registered on fewer inliers
-  OrbParams orb;                         //!< section [ORB]
-  GeometricParams geometric;             //!< section [Geometric]
-  MsseParams msse;                       //!< section [MSSE]
-  DenseParams dense;                     //!< section [Dense]
+  /** [count] after this many flagged frames in a row, the next flagged frame that could be
+   * prepared becomes the keyframe at its predicted pose (0 = never: the keyframe stays until a
+   * frame registers against it). The baselines and peers never do this, as published. */
+  int keyframe_after_failures = 5;
+  OrbParams orb;              //!< section [ORB]
+  GeometricParams geometric;  //!< section [Geometric]
+  MsseParams msse;            //!< section [MSSE]
+  DenseParams dense;          //!< section [Dense]
 
   template <class P, class V>
   static void declare(P& p, V& v) {
@@ -119,6 +123,9 @@ struct OdometryParams : public Params<OdometryParams> {
     HRGBD_PARAM(keyframe_max_rotation_deg, "[deg] new keyframe beyond this rotation from it",
                 Range::openClosed(0, 180));
     HRGBD_PARAM(keyframe_min_inliers, "[count] new keyframe below this many inliers",
+                Range::atLeast(0));
+    HRGBD_PARAM(keyframe_after_failures,
+                "[count] flagged frames in a row after which one becomes the keyframe (0 = never)",
                 Range::atLeast(0));
     v.section(p.orb, "ORB");
     v.section(p.geometric, "Geometric");

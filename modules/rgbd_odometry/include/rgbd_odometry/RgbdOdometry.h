@@ -3,7 +3,9 @@
  * The tracker (paper Algorithm 2): each frame is prepared, registered against the reference
  * (the last registered frame, or the keyframe with keyframe_max_translation > 0) by a
  * Registration, checked for plausibility, and accepted, which
- * chains the motion, G_n = G_ref T (eq. 8), or flagged, which predicts the pose. */
+ * chains the motion, G_n = G_ref T (eq. 8), or flagged, which predicts the pose. After
+ * keyframe_after_failures flagged frames in a row, a flagged frame becomes the keyframe at its
+ * predicted pose, so that tracking resumes from what the camera sees now. */
 #include <mrpt/obs/CObservation3DRangeScan.h>
 #include <mrpt/poses/CPose3D.h>
 
@@ -45,6 +47,8 @@ class RgbdOdometry {
   FrameResult track(const mrpt::obs::CObservation3DRangeScan& obs);
   std::optional<std::string> implausible(const Eigen::Isometry3d& T) const;
   FrameResult predict(FrameResult r, FrameResult::Status why, std::string detail);
+  /** predict(), and `frame` becomes the keyframe after keyframe_after_failures in a row. */
+  FrameResult failed(Frame frame, FrameResult r, FrameResult::Status why, std::string detail);
   bool newKeyframe(const RegistrationResult& reg) const;
   FrameResult accept(Frame frame, const mrpt::poses::CPose3D& pose, FrameResult r, bool keyframe);
 
@@ -54,6 +58,7 @@ class RgbdOdometry {
   mrpt::poses::CPose3D m_pose;      // pose of the latest frame
   mrpt::poses::CPose3D m_velocity;  // last registered per-frame motion
   bool m_previous_registered = false;
+  int m_failures = 0;  // flagged frames since the last registered one or keyframe
 };
 
 }  // namespace hrgbd
