@@ -31,6 +31,7 @@ TEST(PaperPreset, DiffersFromTheDefaultsInThePapersSwitchesOnly) {
   const std::string dir = HRGBD_SOURCE_DIR;
   const mrpt::config::CConfigFile defaults(dir + "/config.ini"), paper(dir + "/config/paper.ini");
   const Keys expected{{"Odometry", "keyframe_max_translation"},
+                      {"Odometry", "keyframe_after_failures"},
                       {"Odometry", "min_photometric_inliers"},
                       {"Odometry", "geometric_fallback"},
                       {"Geometric", "refine_iterations"},
@@ -47,6 +48,7 @@ TEST(PaperPreset, DiffersFromTheDefaultsInThePapersSwitchesOnly) {
   hrgbd::OdometryParams p;
   p.loadFromConfigFile(paper, "Odometry");
   EXPECT_EQ(p.keyframe_max_translation, 0.0);
+  EXPECT_EQ(p.keyframe_after_failures, 0);
   EXPECT_FALSE(p.dense.enabled);
   EXPECT_FALSE(p.geometric_fallback);
   EXPECT_EQ(p.geometric.refine_iterations, 0);

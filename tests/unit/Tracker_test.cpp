@@ -20,6 +20,7 @@ class FakeRegistration : public hrgbd::Registration {
  public:
   struct Log {
     std::vector<std::pair<double, double>> aligned;  // (current t, reference t)
+    std::vector<bool> guessed;                       // whether a motion prediction came along
     int prepared = 0;
   };
   FakeRegistration(std::deque<hrgbd::RegistrationResult> script, Log& log)
@@ -30,6 +31,7 @@ class FakeRegistration : public hrgbd::Registration {
   }
   hrgbd::RegistrationResult align(hrgbd::Frame& cur, hrgbd::Frame& ref) override {
     m_log.aligned.emplace_back(cur.image.t, ref.image.t);
+    m_log.guessed.push_back(cur.guess.has_value());
     if (m_script.empty()) {
       ADD_FAILURE() << "the tracker registered more frames than scripted";
       return {};
@@ -67,11 +69,14 @@ struct Run {
   std::vector<FrameResult> results;
 };
 
-Run track(const std::deque<hrgbd::RegistrationResult>& script, hrgbd::OdometryParams p = {}) {
+// The frames at `times` (default: 100, 101, ...), one more than the script.
+Run track(const std::deque<hrgbd::RegistrationResult>& script, hrgbd::OdometryParams p = {},
+          std::vector<double> times = {}) {
+  for (std::size_t i = times.size(); i <= script.size(); ++i) times.push_back(100.0 + i);
   Run run;
   hrgbd::RgbdOdometry odo(p, std::make_unique<FakeRegistration>(script, run.log));
   for (std::size_t i = 0; i <= script.size(); ++i)
-    run.results.push_back(odo.processObservation(*frame(100 + i)));
+    run.results.push_back(odo.processObservation(*frame(times[i])));
   return run;
 }
 
@@ -233,4 +238,18 @@ TEST(Tracker, BaselinesNeverTakeAKeyframeAfterFailures) {
   const auto run = track({step(0.1), fail, fail, step(0.3)}, p);
   EXPECT_FALSE(run.results[2].keyframe);
   EXPECT_EQ(run.log.aligned.back(), std::make_pair(104.0, 101.0));
+}
+
+TEST(Tracker, NoMotionPredictionAfterATimeGapUntilAFrameRegisters) {
+  // 1 s apart, then 10 s (a gap: more than prediction_max_gap = 3 times the interval before)
+  const std::vector<double> times{100, 101, 102, 112, 113, 114};
+  const auto fail = step(0, 0, Status::TooFewInliers);
+  const auto script =
+      std::deque<hrgbd::RegistrationResult>{step(0.1), step(0.1), fail, step(0.1), step(0.1)};
+  const auto run = track(script, {}, times);
+  // 112 and 113 (after the gap, nothing registered yet) come without one, 114 with one again
+  EXPECT_EQ(run.log.guessed, (std::vector<bool>{true, true, false, false, true}));
+  hrgbd::OdometryParams always;
+  always.prediction_max_gap = 0;
+  EXPECT_EQ(track(script, always, times).log.guessed, std::vector<bool>(5, true));
 }

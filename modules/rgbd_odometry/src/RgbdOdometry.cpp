@@ -75,6 +75,9 @@ void RgbdOdometry::reset() {
   m_pose = m_velocity = mrpt::poses::CPose3D();
   m_previous_registered = false;
   m_failures = 0;
+  m_last_t.reset();
+  m_last_interval = 0;
+  m_after_gap = false;
 }
 
 void RgbdOdometry::correct(const mrpt::poses::CPose3D& correction) {
@@ -92,6 +95,7 @@ FrameResult RgbdOdometry::processObservation(const mrpt::obs::CObservation3DRang
 FrameResult RgbdOdometry::track(const mrpt::obs::CObservation3DRangeScan& obs) {
   FrameResult r;
   r.t = mrpt::Clock::toDouble(obs.timestamp);
+  noteTimeGap(r.t);
   // Algorithm 2, line 3: the frame and the features the registration needs.
   Frame cur;
   try {
@@ -103,7 +107,7 @@ FrameResult RgbdOdometry::track(const mrpt::obs::CObservation3DRangeScan& obs) {
   report(m_registration->prepare(cur), r);
   if (!m_ref) return accept(std::move(cur), m_pose, std::move(r), true);
   // Lines 4-15: register against the reference, on the path the registration chooses.
-  cur.guess = toIsometry((m_pose + m_velocity) - m_ref->pose);
+  if (!m_after_gap) cur.guess = toIsometry((m_pose + m_velocity) - m_ref->pose);
   auto reg = m_registration->align(cur, m_ref->frame);
   report(reg, r);
   if (!reg.ok()) return failed(std::move(cur), std::move(r), reg.status, reg.detail);
@@ -148,6 +152,15 @@ FrameResult RgbdOdometry::failed(Frame frame, FrameResult r, FrameResult::Status
   return r;
 }
 
+void RgbdOdometry::noteTimeGap(double t) {
+  const double interval = m_last_t ? t - *m_last_t : 0;
+  if (m_params.prediction_max_gap > 0 && m_last_interval > 0 &&
+      interval > m_params.prediction_max_gap * m_last_interval)
+    m_after_gap = true;
+  m_last_interval = interval;
+  m_last_t = t;
+}
+
 bool RgbdOdometry::newKeyframe(const RegistrationResult& reg) const {
   return m_params.keyframe_max_translation <= 0 ||
          reg.T.translation().norm() > m_params.keyframe_max_translation ||
@@ -164,6 +177,7 @@ FrameResult RgbdOdometry::accept(Frame frame, const mrpt::poses::CPose3D& pose, 
   if (m_ref && m_previous_registered) m_velocity = pose - m_pose;
   m_previous_registered = true;
   m_failures = 0;
+  m_after_gap = false;
   m_pose = pose;
   if (keyframe) m_ref = Reference{std::move(frame), pose};
   r.pose = m_pose;

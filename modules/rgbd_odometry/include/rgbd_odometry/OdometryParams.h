@@ -98,6 +98,12 @@ struct OdometryParams : public Params<OdometryParams> {
    * prepared becomes the keyframe at its predicted pose (0 = never: the keyframe stays until a
    * frame registers against it). The baselines and peers never do this, as published. */
   int keyframe_after_failures = 5;
+  /** [intervals] after a frame that comes more than this many times the interval before it
+   * after the previous frame (dropped frames, a sensor that stalled), the frames get no motion
+   * prediction as a start of the dense refinement until one registers: across a gap the
+   * prediction is a guess that the refinement could settle from into a wrong pose. 0 = always a
+   * prediction. */
+  double prediction_max_gap = 3;
   OrbParams orb;              //!< section [ORB]
   GeometricParams geometric;  //!< section [Geometric]
   MsseParams msse;            //!< section [MSSE]
@@ -126,6 +132,9 @@ struct OdometryParams : public Params<OdometryParams> {
                 Range::atLeast(0));
     HRGBD_PARAM(keyframe_after_failures,
                 "[count] flagged frames in a row after which one becomes the keyframe (0 = never)",
+                Range::atLeast(0));
+    HRGBD_PARAM(prediction_max_gap,
+                "[intervals] no motion prediction after a longer time gap (0 = always)",
                 Range::atLeast(0));
     v.section(p.orb, "ORB");
     v.section(p.geometric, "Geometric");

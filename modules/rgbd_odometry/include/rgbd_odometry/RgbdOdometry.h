@@ -50,6 +50,9 @@ class RgbdOdometry {
   /** predict(), and `frame` becomes the keyframe after keyframe_after_failures in a row. */
   FrameResult failed(Frame frame, FrameResult r, FrameResult::Status why, std::string detail);
   bool newKeyframe(const RegistrationResult& reg) const;
+  /** Sets m_after_gap when the frame at `t` comes after a time gap (prediction_max_gap);
+   * remembers `t`. */
+  void noteTimeGap(double t);
   FrameResult accept(Frame frame, const mrpt::poses::CPose3D& pose, FrameResult r, bool keyframe);
 
   OdometryParams m_params;
@@ -58,7 +61,10 @@ class RgbdOdometry {
   mrpt::poses::CPose3D m_pose;      // pose of the latest frame
   mrpt::poses::CPose3D m_velocity;  // last registered per-frame motion
   bool m_previous_registered = false;
-  int m_failures = 0;  // flagged frames since the last registered one or keyframe
+  int m_failures = 0;              // flagged frames since the last registered one or keyframe
+  std::optional<double> m_last_t;  // [s] the previous frame's time
+  double m_last_interval = 0;      // [s] and the interval before it
+  bool m_after_gap = false;        // no frame registered since a time gap: no prediction
 };
 
 }  // namespace hrgbd
