@@ -216,6 +216,7 @@ TEST(Evaluate, SeveralEstimatesAsJsonArrayAndTable) {
   EXPECT_EQ(std::count(table.begin(), table.end(), '\n'), 3) << table;
   EXPECT_NE(table.find("a.txt"), std::string::npos);
   EXPECT_NE(table.find(" 101 "), std::string::npos) << table;
+  EXPECT_NE(table.find("e2s [m]"), std::string::npos) << table;
   EXPECT_THROW(hrgbd::toTable({"a.txt"}, {a, b}), std::out_of_range);
 }
 

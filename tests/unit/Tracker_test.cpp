@@ -252,4 +252,25 @@ TEST(Tracker, NoMotionPredictionAfterATimeGapUntilAFrameRegisters) {
   hrgbd::OdometryParams always;
   always.prediction_max_gap = 0;
   EXPECT_EQ(track(script, always, times).log.guessed, std::vector<bool>(5, true));
+
+  // the frame after the gap registers (0.25 m): that motion spans the gap and is no frame's
+  // motion, so the flagged frame 113 is predicted with the one before the gap, 0.1 m
+  const auto bridged = track({step(0.1), step(0.1), step(0.25), fail}, {}, times);
+  EXPECT_EQ(bridged.log.guessed, (std::vector<bool>{true, true, false, true}));
+  EXPECT_NEAR(x(bridged.results[4]), 0.2 + 0.25 + 0.1, 1e-12);
+
+  // a flagged frame taken as the keyframe after the gap: the frames after it are predicted again
+  hrgbd::OdometryParams after_failures;
+  after_failures.keyframe_after_failures = 2;
+  const auto resumed = track({step(0.1), step(0.1), fail, fail, step(0.01)}, after_failures, times);
+  EXPECT_TRUE(resumed.results[4].keyframe);
+  EXPECT_EQ(resumed.log.guessed, (std::vector<bool>{true, true, false, false, true}));
+}
+
+TEST(Tracker, OneShortIntervalMakesNoGapOfTheNext) {
+  // 1 s apart, one frame 0.01 s after its predecessor (a jittered stamp), then 1 s again: the
+  // running mean of the intervals (0.8) does not make the 1 s a gap
+  const std::vector<double> times{100, 101, 102, 103, 103.01, 104.01};
+  const auto run = track({step(0.1), step(0.1), step(0.1), step(0), step(0.1)}, {}, times);
+  EXPECT_EQ(run.log.guessed, std::vector<bool>(5, true));
 }

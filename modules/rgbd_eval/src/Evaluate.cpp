@@ -235,8 +235,9 @@ std::string toTable(const std::vector<std::string>& names, const std::vector<Eva
   int width = 8;
   for (const auto& n : names) width = std::max(width, static_cast<int>(n.size()));
   char buf[1024];
-  std::snprintf(buf, sizeof buf, "%-*s %7s %12s %12s %10s %12s\n", width, "estimate", "pairs",
-                "ATE RMSE [m]", "ATE mean [m]", "RPE [m/s]", "RPE [deg/s]");
+  std::snprintf(buf, sizeof buf, "%-*s %7s %12s %12s %10s %12s %10s %12s\n", width, "estimate",
+                "pairs", "ATE RMSE [m]", "ATE mean [m]", "RPE [m/s]", "RPE [deg/s]", "e2s [m]",
+                "e2s [deg]");
   std::string out = buf;
   for (std::size_t k = 0; k < results.size(); ++k) {
     const auto& r = results[k];
@@ -247,9 +248,9 @@ std::string toTable(const std::vector<std::string>& names, const std::vector<Eva
       std::snprintf(buf, sizeof buf, "%.4f", r.rpe_rot);
       rpe_r = buf;
     }
-    std::snprintf(buf, sizeof buf, "%-*s %7zu %12.4f %12.4f %10s %12s\n", width,
+    std::snprintf(buf, sizeof buf, "%-*s %7zu %12.4f %12.4f %10s %12s %10.4f %12.3f\n", width,
                   names.at(k).c_str(), r.pairs, r.ate_rmse, r.ate_mean_unaligned, rpe_t.c_str(),
-                  rpe_r.c_str());
+                  rpe_r.c_str(), r.end_to_start_trans, r.end_to_start_rot);
     out += buf;
   }
   return out;

@@ -76,7 +76,7 @@ void RgbdOdometry::reset() {
   m_previous_registered = false;
   m_failures = 0;
   m_last_t.reset();
-  m_last_interval = 0;
+  m_mean_interval = 0;
   m_after_gap = false;
 }
 
@@ -147,6 +147,7 @@ FrameResult RgbdOdometry::failed(Frame frame, FrameResult r, FrameResult::Status
   if (m_params.keyframe_after_failures > 0 && m_failures >= m_params.keyframe_after_failures) {
     m_ref = Reference{std::move(frame), m_pose};
     m_failures = 0;
+    m_after_gap = false;  // the keyframe is after any gap: the motion from it is one frame's
     r.keyframe = true;
   }
   return r;
@@ -154,11 +155,13 @@ FrameResult RgbdOdometry::failed(Frame frame, FrameResult r, FrameResult::Status
 
 void RgbdOdometry::noteTimeGap(double t) {
   const double interval = m_last_t ? t - *m_last_t : 0;
-  if (m_params.prediction_max_gap > 0 && m_last_interval > 0 &&
-      interval > m_params.prediction_max_gap * m_last_interval)
-    m_after_gap = true;
-  m_last_interval = interval;
   m_last_t = t;
+  if (!(interval > 0)) return;  // the first frame, or time stamps out of order
+  if (m_params.prediction_max_gap > 0 && m_mean_interval > 0 &&
+      interval > m_params.prediction_max_gap * m_mean_interval)
+    m_after_gap = true;
+  // a running mean, so that one short interval (jittered stamps) makes no gap of the next
+  m_mean_interval = m_mean_interval > 0 ? 0.8 * m_mean_interval + 0.2 * interval : interval;
 }
 
 bool RgbdOdometry::newKeyframe(const RegistrationResult& reg) const {
@@ -174,7 +177,8 @@ FrameResult RgbdOdometry::accept(Frame frame, const mrpt::poses::CPose3D& pose, 
   r.keyframe = keyframe;
   // the motion of one frame: only between two registered frames (after a predicted pose, the
   // difference would carry the prediction's error into every later prediction)
-  if (m_ref && m_previous_registered) m_velocity = pose - m_pose;
+  // (nor across a time gap)
+  if (m_ref && m_previous_registered && !m_after_gap) m_velocity = pose - m_pose;
   m_previous_registered = true;
   m_failures = 0;
   m_after_gap = false;

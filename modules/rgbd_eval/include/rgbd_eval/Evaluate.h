@@ -66,7 +66,8 @@ std::string toJsonArray(const std::vector<std::string>& names,
                         const std::vector<EvalResult>& results);
 
 /** Several estimates as a text table, a header and one row per estimate (names[k]): pairs, ATE
- * RMSE, unaligned ATE mean [m], RPE translation [m/s] and rotation [deg/s] ("-" when none). */
+ * RMSE, unaligned ATE mean [m], RPE translation [m/s] and rotation [deg/s] ("-" when none),
+ * end-to-start error [m] and [deg]. */
 std::string toTable(const std::vector<std::string>& names, const std::vector<EvalResult>& results);
 
 /** A measured relative pose between two times (a loop closure): `relative` is the pose at

@@ -41,7 +41,7 @@ struct FrameResult {
   double scale = 0;                                    //!< [m] estimator noise scale
   /** [m] the current frame's inlier features (optical frame), for display; empty on failure */
   std::vector<Eigen::Vector3f> inlier_points;
-  /** became the reference for the next frames: registered, or flagged after
+  /** became the reference for the next frames: registered, or the last of
    * keyframe_after_failures flagged frames in a row (at its predicted pose) */
   bool keyframe = false;
   StageTimes ms;  //!< [ms] per stage

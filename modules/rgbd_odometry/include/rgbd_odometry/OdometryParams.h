@@ -89,18 +89,19 @@ struct OdometryParams : public Params<OdometryParams> {
   double max_step_rotation_deg = 30;  //!< [deg] larger frame-to-frame rotation is flagged too
   /** [m] Frame-to-keyframe tracking: frames are registered against the keyframe, which the
    * current frame replaces once it is this far from it. 0 = every registered frame becomes the
-   * reference: the paper's frame-to-frame chaining (Algorithm 2). The baselines and peers always
-   * track frame to frame, as published. */
+   * reference (and a flagged one after keyframe_after_failures): the paper's frame-to-frame
+   * chaining (Algorithm 2). The baselines and peers always track frame to frame, as published. */
   double keyframe_max_translation = 0.05;
   double keyframe_max_rotation_deg = 3;  //!< [deg] ... or once it has turned this much
   int keyframe_min_inliers = 0;          //!< [count] ... or was registered on fewer inliers
-  /** [count] after this many flagged frames in a row, the next flagged frame that could be
-   * prepared becomes the keyframe at its predicted pose (0 = never: the keyframe stays until a
-   * frame registers against it). The baselines and peers never do this, as published. */
+  /** [count] after this many flagged frames in a row, the last of them becomes the keyframe at
+   * its predicted pose (frames that could not be prepared count, and the first flagged frame
+   * after them that could is taken); 0 = never: the keyframe stays until a frame registers against
+   * it. The baselines and peers never do this, as published. */
   int keyframe_after_failures = 5;
-  /** [intervals] after a frame that comes more than this many times the interval before it
-   * after the previous frame (dropped frames, a sensor that stalled), the frames get no motion
-   * prediction as a start of the dense refinement until one registers: across a gap the
+  /** [intervals] after a frame that comes more than this many times the mean interval (a running
+   * mean) after the previous frame (dropped frames, a sensor that stalled), the frames get no
+   * motion prediction as a start of the dense refinement until one registers: across a gap the
    * prediction is a guess that the refinement could settle from into a wrong pose. 0 = always a
    * prediction. */
   double prediction_max_gap = 3;
@@ -131,7 +132,7 @@ struct OdometryParams : public Params<OdometryParams> {
     HRGBD_PARAM(keyframe_min_inliers, "[count] new keyframe below this many inliers",
                 Range::atLeast(0));
     HRGBD_PARAM(keyframe_after_failures,
-                "[count] flagged frames in a row after which one becomes the keyframe (0 = never)",
+                "[count] flagged frames in a row: the last becomes the keyframe (0 = never)",
                 Range::atLeast(0));
     HRGBD_PARAM(prediction_max_gap,
                 "[intervals] no motion prediction after a longer time gap (0 = always)",

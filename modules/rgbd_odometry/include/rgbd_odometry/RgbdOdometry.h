@@ -1,7 +1,8 @@
 #pragma once
 /** \file RgbdOdometry.h
  * The tracker (paper Algorithm 2): each frame is prepared, registered against the reference
- * (the last registered frame, or the keyframe with keyframe_max_translation > 0) by a
+ * (the last registered frame, or the keyframe with keyframe_max_translation > 0, or a flagged
+ * frame taken after keyframe_after_failures) by a
  * Registration, checked for plausibility, and accepted, which
  * chains the motion, G_n = G_ref T (eq. 8), or flagged, which predicts the pose. After
  * keyframe_after_failures flagged frames in a row, a flagged frame becomes the keyframe at its
@@ -57,13 +58,13 @@ class RgbdOdometry {
 
   OdometryParams m_params;
   std::unique_ptr<Registration> m_registration;
-  std::optional<Reference> m_ref;   // last registered frame, or the keyframe
+  std::optional<Reference> m_ref;   // last registered frame, the keyframe, or a flagged one
   mrpt::poses::CPose3D m_pose;      // pose of the latest frame
   mrpt::poses::CPose3D m_velocity;  // last registered per-frame motion
   bool m_previous_registered = false;
   int m_failures = 0;              // flagged frames since the last registered one or keyframe
   std::optional<double> m_last_t;  // [s] the previous frame's time
-  double m_last_interval = 0;      // [s] and the interval before it
+  double m_mean_interval = 0;      // [s] running mean of the intervals between frames
   bool m_after_gap = false;        // no frame registered since a time gap: no prediction
 };
 

@@ -23,7 +23,9 @@ struct SimParams : public Params<SimParams> {
   double fps = 30;             //!< [Hz]
   int seed = 1;                //!< noise and jitter seed (same seed, same sequence)
   /** "sweep" (procedural sweep along the structure with hand-held jitter), "loop" (an orbit of
-   * +-35 deg about the scene that returns to its start after the last frame: a loop to close) or
+   * +-35 deg about the scene that returns to its start after the last frame: a loop to close; it
+   * lasts frames / fps, so 960 frames at 30 Hz orbit in 32 s, and under ~300 frames it is
+   * faster than hand-held motion) or
    * a TUM trajectory file whose motion is replayed, moved so that the point it looked at is the
    * scene's look_at. */
   std::string motion = "sweep";
