@@ -5,7 +5,6 @@
 #include <mrpt/poses/CPose3DQuat.h>
 #include <mrpt/tfest/se3.h>
 
-#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -23,6 +22,13 @@ double rotationAngleDeg(const mrpt::poses::CPose3D& p) {
   const auto R = p.getRotationMatrix();
   const double c = std::clamp((R(0, 0) + R(1, 1) + R(2, 2) - 1.0) / 2.0, -1.0, 1.0);
   return mrpt::RAD2DEG(std::acos(c));
+}
+
+/** The error of `measured`, a relative pose from `a` to `b`, against the truth's relative pose
+ * from `qa` to `qb`: (Q_a^-1 Q_b)^-1 M. */
+mrpt::poses::CPose3D relativeError(const mrpt::poses::CPose3D& qa, const mrpt::poses::CPose3D& qb,
+                                   const mrpt::poses::CPose3D& measured) {
+  return measured - (qb - qa);
 }
 
 double rms(const std::vector<double>& v) {
@@ -44,10 +50,8 @@ void computeRpe(const std::vector<double>& t, const Trajectory& gt, const Trajec
     while (j < t.size() && t[j] - t[i] < r.rpe_delta_used - 1e-9) ++j;
     if (j >= t.size()) break;
     const double dt = t[j] - t[i];
-    if (dt > 2 * r.rpe_delta_used) continue;    // a gap in the data, not an interval
-    const auto dq = gt[j].pose - gt[i].pose;    // Q_i^-1 Q_j
-    const auto dp = est[j].pose - est[i].pose;  // P_i^-1 P_j
-    const auto e = dp - dq;                     // (Q_i^-1 Q_j)^-1 (P_i^-1 P_j)
+    if (dt > 2 * r.rpe_delta_used) continue;  // a gap in the data, not an interval
+    const auto e = relativeError(gt[i].pose, gt[j].pose, est[j].pose - est[i].pose);
     r.rpe_t.push_back(t[i]);
     et.push_back(e.translation().norm() / dt);
     er.push_back(rotationAngleDeg(e) / dt);
@@ -154,7 +158,8 @@ EvalResult evaluateTrajectory(const Trajectory& ground_truth, const Trajectory& 
   computeRpe(r.t, gt, est, params.rpe_delta, r);
 
   // (4) End to start: the RPE's error over the single interval first -> last.
-  const auto end_error = (est.back().pose - est.front().pose) - (gt.back().pose - gt.front().pose);
+  const auto end_error =
+      relativeError(gt.front().pose, gt.back().pose, est.back().pose - est.front().pose);
   r.end_to_start_trans = end_error.translation().norm();
   r.end_to_start_rot = rotationAngleDeg(end_error);
   r.ground_truth = gt;
@@ -275,12 +280,10 @@ RelativeCheck checkRelativePoses(const Trajectory& gt, const std::vector<Relativ
     const auto* a = nearest(r.t_from);
     const auto* b = nearest(r.t_to);
     if (!a || !b) continue;
-    const mrpt::poses::CPose3D err = (-((-a->pose) + b->pose)) + r.relative;
-    const double angle =
-        mrpt::RAD2DEG(Eigen::AngleAxisd(err.getRotationMatrix().asEigen()).angle());
+    const auto err = relativeError(a->pose, b->pose, r.relative);
     ++out.checked;
     out.largest_translation = std::max(out.largest_translation, err.norm());
-    out.largest_rotation = std::max(out.largest_rotation, angle);
+    out.largest_rotation = std::max(out.largest_rotation, rotationAngleDeg(err));
   }
   return out;
 }

@@ -66,8 +66,10 @@ RgbdOdometry::RgbdOdometry(const OdometryParams& params)
 RgbdOdometry::RgbdOdometry(const OdometryParams& params, std::unique_ptr<Registration> registration)
     : m_params(params), m_registration(std::move(registration)) {
   // the baselines and peers track frame to frame, as published
-  if (!isProductMethod(params.method))
-    m_params.keyframe_max_translation = 0, m_params.keyframe_after_failures = 0;
+  if (!isProductMethod(params.method)) {
+    m_params.keyframe_max_translation = 0;
+    m_params.keyframe_after_failures = 0;
+  }
 }
 
 void RgbdOdometry::reset() {

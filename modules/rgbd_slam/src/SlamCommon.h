@@ -17,8 +17,8 @@ inline double angleRad(const mrpt::poses::CPose3D& d) {
   return Eigen::AngleAxisd(toIsometry(d).rotation()).angle();
 }
 
-inline constexpr double kLever =
-    1.5;  // [m] typical depth: rotation sigma = translation sigma / lever
+/** [m] typical depth: rotation sigma = translation sigma / lever */
+inline constexpr double kLever = 1.5;
 
 /** [m] how far apart two views are: the translation plus the rotation over the lever arm */
 inline double viewDistance(const mrpt::poses::CPose3D& d) {
