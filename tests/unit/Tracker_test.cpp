@@ -274,3 +274,21 @@ TEST(Tracker, OneShortIntervalMakesNoGapOfTheNext) {
   const auto run = track({step(0.1), step(0.1), step(0.1), step(0), step(0.1)}, {}, times);
   EXPECT_EQ(run.log.guessed, std::vector<bool>(5, true));
 }
+
+TEST(Tracker, APredictionGapOfAtMostOneIntervalIsRejected) {
+  hrgbd::OdometryParams p;
+  for (const double ok : {0.0, 1.5, 3.0}) {
+    p.prediction_max_gap = ok;
+    EXPECT_NO_THROW(p.validate("Odometry")) << ok;
+  }
+  for (const double bad : {0.5, 1.0}) {
+    p.prediction_max_gap = bad;
+    try {
+      p.validate("Odometry");
+      ADD_FAILURE() << "prediction_max_gap = " << bad << " accepted";
+    } catch (const hrgbd::ConfigError& e) {
+      EXPECT_NE(std::string(e.what()).find("[Odometry] prediction_max_gap"), std::string::npos)
+          << e.what();
+    }
+  }
+}

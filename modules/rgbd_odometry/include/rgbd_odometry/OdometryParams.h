@@ -135,13 +135,16 @@ struct OdometryParams : public Params<OdometryParams> {
                 "[count] flagged frames in a row: the last becomes the keyframe (0 = never)",
                 Range::atLeast(0));
     HRGBD_PARAM(prediction_max_gap,
-                "[intervals] no motion prediction after a longer time gap (0 = always)",
+                "[intervals] no motion prediction after a longer time gap (0 = always, else > 1)",
                 Range::atLeast(0));
     v.section(p.orb, "ORB");
     v.section(p.geometric, "Geometric");
     v.section(p.msse, "MSSE");
     v.section(p.dense, "Dense");
   }
+  /** prediction_max_gap is 0 or above 1: a gap of at most one mean interval would take the
+   * prediction from every other frame. */
+  void checkTogether(const std::string& section) const;
 };
 
 }  // namespace hrgbd
