@@ -280,3 +280,53 @@ TEST(DenseRefinement, SkippingUntexturedCellsChangesNothing) {
   ASSERT_TRUE(c.ok) << c.detail;
   EXPECT_GT(c.photometric_pairs, a.photometric_pairs);
 }
+
+// A pair from a rolling shutter: each frame's rows seen from its pose moved by `readout`
+// (translation, rotation vector over the readout) times the row's time from the middle row.
+Pair renderRollingPair(const Eigen::Matrix<double, 6, 1>& readout) {
+  const auto scene = hrgbd::sim::makeScene("desk", false);
+  const hrgbd::PinholeCamera cam;
+  auto rows = [&](const mrpt::poses::CPose3D& middle) {
+    auto at = [&](double s) {
+      Isometry3d M = Isometry3d::Identity();
+      M.translation() = s * readout.head<3>();
+      M.linear() = Eigen::AngleAxisd(s * readout.tail<3>().norm(), readout.tail<3>().normalized())
+                       .toRotationMatrix();
+      return middle + hrgbd::toPose(M);
+    };
+    const auto ideal = hrgbd::sim::renderIdeal(scene, at(-0.5), cam, at(0.5));
+    hrgbd::RgbdImage f;
+    cv::Mat grey;
+    cv::cvtColor(ideal.colour, grey, cv::COLOR_RGB2GRAY);
+    grey.convertTo(f.grey, CV_8U, 255);
+    f.depth = ideal.depth;
+    f.cam = cam;
+    auto pyramid = hrgbd::buildDensePyramid(f, hrgbd::DenseParams());
+    pyramid.readout_motion = readout;
+    return pyramid;
+  };
+  const auto ref_pose =
+      hrgbd::sim::lookAt(Eigen::Vector3d(0, 0.0, 1.2), Eigen::Vector3d(0, 1.3, 0.75));
+  return {rows(ref_pose + kMotion), rows(ref_pose), hrgbd::toIsometry(kMotion)};
+}
+
+TEST(DenseRefinement, UndoesARollingShutterWithTheReadoutMotion) {
+  // fr1/rpy-like: 1.5 deg and 1 cm during a 30 ms readout (50 deg/s, 0.33 m/s)
+  Eigen::Matrix<double, 6, 1> readout;
+  readout << 0.01, 0, 0, 0, mrpt::DEG2RAD(1.5), 0;
+  auto pair = renderRollingPair(readout);
+  const Isometry3d start = perturbed(pair.truth, 0.01, 1.0);
+  const auto undone = hrgbd::refineDense(pair.cur, pair.ref, {start}, hrgbd::DenseParams());
+  ASSERT_TRUE(undone.ok) << undone.detail;
+  pair.cur.readout_motion.setZero();
+  pair.ref.readout_motion.setZero();
+  const auto skewed = hrgbd::refineDense(pair.cur, pair.ref, {start}, hrgbd::DenseParams());
+  ASSERT_TRUE(skewed.ok) << skewed.detail;
+  const auto [t, r] = error(undone.T, pair.truth);
+  const auto [ts, rs] = error(skewed.T, pair.truth);
+  // as near as without a rolling shutter (LeavesACorrectEstimateInPlace), and nearer than the
+  // skewed frames' result (measured 0.30 mm, 0.013 deg against 0.98 mm, 0.083 deg)
+  EXPECT_LT(t, 0.0007);
+  EXPECT_LT(r, 0.03);
+  EXPECT_GT(ts + rs / 100, 2 * (t + r / 100)) << ts << " m, " << rs << " deg skewed";
+}

@@ -21,6 +21,8 @@ class FakeRegistration : public hrgbd::Registration {
   struct Log {
     std::vector<std::pair<double, double>> aligned;  // (current t, reference t)
     std::vector<bool> guessed;                       // whether a motion prediction came along
+    // the velocities of the current frame and of the reference (NaN: none)
+    std::vector<std::pair<Eigen::Matrix<double, 6, 1>, Eigen::Matrix<double, 6, 1>>> velocities;
     int prepared = 0;
   };
   FakeRegistration(std::deque<hrgbd::RegistrationResult> script, Log& log)
@@ -32,6 +34,8 @@ class FakeRegistration : public hrgbd::Registration {
   hrgbd::RegistrationResult align(hrgbd::Frame& cur, hrgbd::Frame& ref) override {
     m_log.aligned.emplace_back(cur.image.t, ref.image.t);
     m_log.guessed.push_back(cur.guess.has_value());
+    const auto none = Eigen::Matrix<double, 6, 1>::Constant(std::nan(""));
+    m_log.velocities.emplace_back(cur.velocity.value_or(none), ref.velocity.value_or(none));
     if (m_script.empty()) {
       ADD_FAILURE() << "the tracker registered more frames than scripted";
       return {};
@@ -291,4 +295,33 @@ TEST(Tracker, APredictionGapOfAtMostOneIntervalIsRejected) {
           << e.what();
     }
   }
+}
+
+TEST(Tracker, FramesCarryTheVelocityOnceItIsMeasured) {
+  // 0.5 s apart; the second registered frame measures 0.1 m and 10 deg a frame: 0.2 m/s, 20 deg/s
+  const std::vector<double> times{100, 100.5, 101, 101.5, 102, 112, 112.5, 113};
+  const auto fail = step(0, 0, Status::TooFewInliers);
+  hrgbd::OdometryParams frame_to_frame;
+  frame_to_frame.keyframe_max_translation = 0;
+  const auto run =
+      track({step(0.1, 10), step(0.1, 10), fail, step(0.2, 20), step(0.1), step(0.1), step(0.1)},
+            frame_to_frame, times);
+  const auto& v = run.log.velocities;
+  ASSERT_EQ(v.size(), 7u);
+  // frame 1 (nothing measured yet) and its reference, the first frame: none
+  EXPECT_TRUE(v[0].first.hasNaN() && v[0].second.hasNaN());
+  // frame 2 has frame 1's motion: translation [m/s] and rotation vector [rad/s], camera frame
+  Eigen::Matrix<double, 6, 1> expected;
+  expected << 0.2, 0, 0, 0, 20 * M_PI / 180, 0;
+  EXPECT_TRUE(v[1].first.isApprox(expected, 1e-9)) << v[1].first.transpose();
+  // and so has its reference, frame 1, which measured it when it was registered
+  EXPECT_TRUE(v[1].second.isApprox(expected, 1e-9)) << v[1].second.transpose();
+  // frame 4, after the flagged frame 3, is still predicted with it
+  EXPECT_TRUE(v[3].first.isApprox(expected, 1e-9));
+  // after the 10 s gap: none until two frames have registered again (5 and 6); frame 7 has
+  // frame 6's motion over its own interval, 0.1 m in 0.5 s (not over the mean with the gap)
+  EXPECT_TRUE(v[4].first.hasNaN());
+  EXPECT_TRUE(v[5].first.hasNaN());
+  expected << 0.2, 0, 0, 0, 0, 0;
+  EXPECT_TRUE(v[6].first.isApprox(expected, 1e-9)) << v[6].first.transpose();
 }

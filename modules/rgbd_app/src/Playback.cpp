@@ -186,9 +186,13 @@ void evaluate(const FrameSource& source, const Trajectory& estimate, const std::
 
 PlaybackSummary runPlayback(const PlaybackOptions& opt, std::ostream& log) {
   const auto job = resolveJob(opt);
-  auto odometry = makeOdometry(job.odometry, *job.cfg);
   if (job.input.empty()) throw ConfigError("no input: give --input or [Playback] input");
   auto source = openFrameSource(job.input, *job.cfg);
+  // the camera's rolling shutter, where the source knows the camera and the INI does not say
+  OdometryParams params = job.odometry;
+  if (params.dense.rolling_shutter_ms == 0)
+    params.dense.rolling_shutter_ms = source->rollingShutterMs();
+  auto odometry = makeOdometry(params, *job.cfg);
   // No output may overwrite an input or another output; checked before anything is written.
   auto inputs = source->inputs();
   inputs.push_back({opt.config, "the configuration file (--config)"});
@@ -199,14 +203,16 @@ PlaybackSummary runPlayback(const PlaybackOptions& opt, std::ostream& log) {
   } catch (const std::invalid_argument& e) {
     throw UsageError(e.what());
   }
-  log << "input: " << source->describe() << "\nmethod: " << toString(job.odometry.method) << "\n";
+  log << "input: " << source->describe() << "\nmethod: " << toString(params.method) << "\n";
+  if (params.dense.enabled && params.dense.rolling_shutter_ms > 0 && isProductMethod(params.method))
+    log << "rolling shutter: " << params.dense.rolling_shutter_ms << " ms readout undone\n";
 
   const auto max_frames = opt.max_frames > 0 ? static_cast<std::size_t>(opt.max_frames) : 0;
   ProgressParams progress;  // frameProgress() may count a rawlog's frames: only when shown
   if (opt.progress) progress = frameProgress(*source, max_frames, opt.progress_label);
   const auto sinks = makeSinks(job, *source, opt.progress ? &progress : nullptr);
   FrameLoop loop(*source, std::move(odometry), sinks.list(), max_frames);
-  if (job.slam.enabled) loop.setSlam(std::make_unique<KeyframeSlam>(job.slam, job.odometry));
+  if (job.slam.enabled) loop.setSlam(std::make_unique<KeyframeSlam>(job.slam, params));
   if (!job.graph.empty() && !job.slam.enabled)
     throw UsageError(
         "a pose graph (--graph / [Playback] graph) needs the SLAM mode ([Slam] enabled)");

@@ -207,4 +207,10 @@ std::string TumSource::describe() const {
          " ground-truth poses";
 }
 
+double TumSource::rollingShutterMs() const {
+  // fr3's slow sequences measured no consistent gain (doc/measurements.md): not undone there
+  const bool fast_kinect = m_camera_name == "fr1" || m_camera_name == "fr2";
+  return fast_kinect ? m_params.rolling_shutter_ms : 0;
+}
+
 }  // namespace hrgbd

@@ -75,6 +75,7 @@ RgbdOdometry::RgbdOdometry(const OdometryParams& params, std::unique_ptr<Registr
 void RgbdOdometry::reset() {
   m_ref.reset();
   m_pose = m_velocity = mrpt::poses::CPose3D();
+  m_twist.reset();
   m_previous_registered = false;
   m_failures = 0;
   m_last_t.reset();
@@ -109,7 +110,10 @@ FrameResult RgbdOdometry::track(const mrpt::obs::CObservation3DRangeScan& obs) {
   report(m_registration->prepare(cur), r);
   if (!m_ref) return accept(std::move(cur), m_pose, std::move(r), true);
   // Lines 4-15: register against the reference, on the path the registration chooses.
-  if (!m_after_gap) cur.guess = toIsometry((m_pose + m_velocity) - m_ref->pose);
+  if (!m_after_gap) {
+    cur.guess = toIsometry((m_pose + m_velocity) - m_ref->pose);
+    cur.velocity = m_twist;
+  }
   auto reg = m_registration->align(cur, m_ref->frame);
   report(reg, r);
   if (!reg.ok()) return failed(std::move(cur), std::move(r), reg.status, reg.detail);
@@ -158,10 +162,13 @@ FrameResult RgbdOdometry::failed(Frame frame, FrameResult r, FrameResult::Status
 void RgbdOdometry::noteTimeGap(double t) {
   const double interval = m_last_t ? t - *m_last_t : 0;
   m_last_t = t;
+  m_interval = interval;
   if (!(interval > 0)) return;  // the first frame, or time stamps out of order
   if (m_params.prediction_max_gap > 0 && m_mean_interval > 0 &&
-      interval > m_params.prediction_max_gap * m_mean_interval)
+      interval > m_params.prediction_max_gap * m_mean_interval) {
     m_after_gap = true;
+    m_twist.reset();  // the velocity before the gap is not the one after it
+  }
   // a running mean, so that one short interval (jittered stamps) makes no gap of the next
   m_mean_interval = m_mean_interval > 0 ? 0.8 * m_mean_interval + 0.2 * interval : interval;
 }
@@ -180,12 +187,23 @@ FrameResult RgbdOdometry::accept(Frame frame, const mrpt::poses::CPose3D& pose, 
   // the motion of one frame: only between two registered frames (after a predicted pose, the
   // difference would carry the prediction's error into every later prediction)
   // (nor across a time gap)
-  if (m_ref && m_previous_registered && !m_after_gap) m_velocity = pose - m_pose;
+  if (m_ref && m_previous_registered && !m_after_gap) {
+    m_velocity = pose - m_pose;
+    if (m_interval > 0) {  // over the time between the two frames
+      const Eigen::Isometry3d M = toIsometry(m_velocity);
+      const Eigen::AngleAxisd a(M.rotation());
+      m_twist.emplace();
+      *m_twist << M.translation() / m_interval, a.angle() / m_interval * a.axis();
+    }
+  }
   m_previous_registered = true;
   m_failures = 0;
   m_after_gap = false;
   m_pose = pose;
-  if (keyframe) m_ref = Reference{std::move(frame), pose};
+  if (keyframe) {
+    frame.velocity = m_twist;  // measured now: this frame's own motion
+    m_ref = Reference{std::move(frame), pose};
+  }
   r.pose = m_pose;
   return r;
 }

@@ -40,6 +40,9 @@ class FrameSource {
     (void)at_most;
     return 0;
   }
+  /** [ms] The camera's rolling-shutter readout, first row to last, when the source knows the
+   * camera; 0 = unknown or a global shutter. */
+  virtual double rollingShutterMs() const { return 0; }
   const SourceStats& stats() const { return m_stats; }
 
  protected:

@@ -23,6 +23,11 @@ struct TumSourceParams : public Params<TumSourceParams> {
   std::string intrinsics = "auto";
   double fx = 525.0, fy = 525.0;  //!< [px] focal lengths, only with intrinsics = explicit
   double cx = 319.5, cy = 239.5;  //!< [px] principal point, only with intrinsics = explicit
+  /** [ms] rolling-shutter readout of the fr1 and fr2 Kinects, first row to last: the frames of a
+   * folder whose camera is fr1 or fr2 get it as [Dense] rolling_shutter_ms unless that is set
+   * (0 = not undone). Not fr3: on its slow sequences the correction measured no consistent gain
+   * (doc/measurements.md). */
+  double rolling_shutter_ms = 30;
 
   template <class P, class V>
   static void declare(P& p, V& v) {
@@ -34,6 +39,8 @@ struct TumSourceParams : public Params<TumSourceParams> {
     HRGBD_PARAM(fy, "[px] only with intrinsics = explicit", Range::above(0));
     HRGBD_PARAM(cx, "[px] only with intrinsics = explicit");
     HRGBD_PARAM(cy, "[px] only with intrinsics = explicit");
+    HRGBD_PARAM(rolling_shutter_ms, "[ms] readout of the fr1 and fr2 cameras (0 = not undone)",
+                Range::atLeast(0));
   }
 };
 
@@ -58,6 +65,8 @@ class TumSource : public FrameSource {
     return at_most > 0 ? std::min(at_most, size()) : size();
   }
   std::size_t unmatchedColour() const { return m_unmatched_rgb; }
+  /** rolling_shutter_ms for the fr1 and fr2 cameras, 0 for others. */
+  double rollingShutterMs() const override;
 
  private:
   std::string m_folder;

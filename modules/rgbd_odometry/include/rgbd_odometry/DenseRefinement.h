@@ -44,6 +44,10 @@ struct DenseParams : public Params<DenseParams> {
    * n n^T of its normals at least this. Measured: simulated plain wall 0.048 (noisy normals),
    * real plain structure 0.13, simulated structures 0.24-0.28. */
   double min_normal_spread = 0.1;
+  /** [ms] readout time of a rolling shutter, first row to last, of colour and depth alike; each
+   * row's points are moved to the frame time (the middle row) with the camera's velocity.
+   * 0 = a global shutter. */
+  double rolling_shutter_ms = 0;
 
   template <class P, class V>
   static void declare(P& p, V& v) {
@@ -69,6 +73,8 @@ struct DenseParams : public Params<DenseParams> {
                 Range::openClosed(0, 180));
     HRGBD_PARAM(min_normal_spread, "registered densely alone without texture: normals must spread",
                 Range::closed(0, 1.0 / 3));
+    HRGBD_PARAM(rolling_shutter_ms, "[ms] rolling-shutter readout, first to last row (0 = global)",
+                Range::atLeast(0));
   }
   void checkTogether(const std::string& section) const;
 };
@@ -91,6 +97,9 @@ struct DenseLevel {
 /** Levels from the finest used (index 0) to the coarsest. */
 struct DensePyramid {
   std::vector<DenseLevel> levels;
+  /** The camera's motion during the readout, first row to last (translation [m], rotation
+   * vector [rad]) in the camera frame: zero for a global shutter or an unknown velocity. */
+  Eigen::Matrix<double, 6, 1> readout_motion = Eigen::Matrix<double, 6, 1>::Zero();
 };
 
 DensePyramid buildDensePyramid(const RgbdImage& image, const DenseParams& params);

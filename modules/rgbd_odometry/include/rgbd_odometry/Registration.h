@@ -32,6 +32,9 @@ struct Frame {
   /** The tracker's prediction of the motion to the reference (constant velocity), when it has
    * one: the start of a dense registration when no sparse estimate exists. */
   std::optional<Eigen::Isometry3d> guess;
+  /** The camera's velocity at this frame (translation [m/s], rotation vector [rad/s]) in its own
+   * frame, when the tracker knows it: a rolling shutter's skew is undone with it. */
+  std::optional<Eigen::Matrix<double, 6, 1>> velocity;
 };
 
 /** What a registration saw of one frame on its own (the report of a first frame). */

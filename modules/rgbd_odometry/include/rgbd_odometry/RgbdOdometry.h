@@ -61,10 +61,14 @@ class RgbdOdometry {
   std::optional<Reference> m_ref;   // last registered frame, the keyframe, or a flagged one
   mrpt::poses::CPose3D m_pose;      // pose of the latest frame
   mrpt::poses::CPose3D m_velocity;  // last registered per-frame motion
+  // m_velocity per second (translation, rotation vector), once measured: a rolling shutter's
+  // skew is undone with it
+  std::optional<Eigen::Matrix<double, 6, 1>> m_twist;
   bool m_previous_registered = false;
   int m_failures = 0;              // flagged frames since the last registered one or keyframe
   std::optional<double> m_last_t;  // [s] the previous frame's time
   double m_mean_interval = 0;      // [s] running mean of the intervals between frames
+  double m_interval = 0;           // [s] the latest interval (0: the first frame, or out of order)
   bool m_after_gap = false;        // no frame registered since a time gap: no prediction
 };
 
