@@ -114,7 +114,10 @@ class LevelSolver {
     const Eigen::Matrix3d Rt = T.rotation().transpose();
     for (auto& pt : m_points) {
       const Eigen::Vector3d X = T * pt.P;
-      if (X.z() <= 0) continue;
+      if (X.z() <= 0) {  // behind the reference: never paired, but no other start's correction
+        pt.at_reference_rows = pt.P;
+        continue;
+      }
       const double s = (c.fy * X.y() / X.z() + c.cy + 0.5) / c.height - 0.5;
       pt.at_reference_rows = pt.P - Rt * (toMiddleRow(X, s, m_ref_readout) - X);
     }
