@@ -105,12 +105,13 @@ void BM_DenseRefine(benchmark::State& s) {
 // The same with both frames' rolling shutter undone (30 ms readout at 0.3 m/s, 1 rad/s).
 void BM_DenseRefineRollingShutter(benchmark::State& s) {
   const DenseParams p;
-  auto cur = buildDensePyramid(pair().img[1], p), ref = buildDensePyramid(pair().img[0], p);
-  cur.readout_motion << 0.009, 0, 0, 0, 0.03, 0;
-  ref.readout_motion = cur.readout_motion;
+  const auto cur = buildDensePyramid(pair().img[1], p), ref = buildDensePyramid(pair().img[0], p);
+  ReadoutMotion readout;
+  readout << 0.009, 0, 0, 0, 0.03, 0;
   const auto start = estimateMsse(pair().corr, MsseParams()).T;
   DenseResult d;
-  for (auto _ : s) benchmark::DoNotOptimize(d = refineDense(cur, ref, {start}, p));
+  for (auto _ : s)
+    benchmark::DoNotOptimize(d = refineDense(cur, ref, {start}, p, readout, readout));
   s.counters["iterations"] = d.iterations;
 }
 

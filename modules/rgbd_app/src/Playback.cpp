@@ -188,10 +188,7 @@ PlaybackSummary runPlayback(const PlaybackOptions& opt, std::ostream& log) {
   const auto job = resolveJob(opt);
   if (job.input.empty()) throw ConfigError("no input: give --input or [Playback] input");
   auto source = openFrameSource(job.input, *job.cfg);
-  // the camera's rolling shutter, where the source knows the camera and the INI does not say
-  OdometryParams params = job.odometry;
-  if (params.dense.rolling_shutter_ms == 0)
-    params.dense.rolling_shutter_ms = source->rollingShutterMs();
+  const OdometryParams params = withSourceCamera(job.odometry, *source);
   auto odometry = makeOdometry(params, *job.cfg);
   // No output may overwrite an input or another output; checked before anything is written.
   auto inputs = source->inputs();

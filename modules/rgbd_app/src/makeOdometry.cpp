@@ -12,6 +12,12 @@ std::unique_ptr<RgbdOdometry> makeOdometry(const OdometryParams& params,
   return std::make_unique<RgbdOdometry>(params, makeAnyRegistration(params, baselines));
 }
 
+OdometryParams withSourceCamera(OdometryParams params, const FrameSource& source) {
+  if (params.dense.rolling_shutter_ms == 0)
+    params.dense.rolling_shutter_ms = source.rollingShutterMs();
+  return params;
+}
+
 SlamParams loadSlamParams(const mrpt::config::CConfigFileBase& cfg, const std::string& base,
                           Method method, bool on, bool off) {
   if (on && off) throw UsageError("--slam and --no-slam together");

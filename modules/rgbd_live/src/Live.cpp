@@ -102,8 +102,9 @@ void runLive(const LiveOptions& opt, std::ostream& log) {
   map_params.loadFromConfigFile(*cfg, "Map");
   const SlamParams slam =
       loadSlamParams(*cfg, iniFolder(opt.config), params.method, opt.slam, opt.no_slam);
-  auto odometry = makeOdometry(params, *cfg);
   auto source = openFrameSource(opt.input, *cfg);  // throws "no OpenNI2 sensor ..." clearly
+  params = withSourceCamera(params, *source);
+  auto odometry = makeOdometry(params, *cfg);
   auto inputs = source->inputs();
   inputs.push_back({opt.config, "the configuration file (--config)"});
   for (const auto& p : slamInputs(slam)) inputs.push_back(p);

@@ -34,18 +34,15 @@ RegistrationResult DenseRefined::align(Frame& cur, Frame& ref) {
   if (cur.guess && (starts.empty() || !near(starts[0], *cur.guess, 0.01, 1.0)))
     starts.push_back(*cur.guess);
   if (starts.empty()) return r;
+  // the rolling shutter of both frames or of neither: the skews of two frames moving alike
+  // mostly cancel, and undoing one alone would leave the other's whole
   const double readout = m_params.rolling_shutter_ms * 1e-3;  // [s]
-  // both frames or neither: the skews of two frames moving alike mostly cancel, and undoing one
-  // alone would leave the other's whole (a reference of unknown velocity, such as the first
-  // frame, is taken to have moved as the current frame does)
-  cur.dense->readout_motion.setZero();
-  ref.dense->readout_motion.setZero();
-  if (cur.velocity) {
-    cur.dense->readout_motion = *cur.velocity * readout;
-    ref.dense->readout_motion = ref.velocity.value_or(*cur.velocity) * readout;
-  }
-  const DenseResult d = timed(
-      r.seen.ms.refine, [&] { return refineDense(*cur.dense, *ref.dense, starts, m_params); });
+  ReadoutMotion cur_readout = ReadoutMotion::Zero(), ref_readout = ReadoutMotion::Zero();
+  if (readout > 0 && cur.velocity && ref.velocity)
+    cur_readout = *cur.velocity * readout, ref_readout = *ref.velocity * readout;
+  const DenseResult d = timed(r.seen.ms.refine, [&] {
+    return refineDense(*cur.dense, *ref.dense, starts, m_params, cur_readout, ref_readout);
+  });
   if (!d.ok) {
     if (!r.ok()) r.detail += "; " + d.detail;
     return r;  // too little to refine with: the sparse estimate stands (or the failure)

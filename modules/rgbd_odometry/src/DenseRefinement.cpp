@@ -257,7 +257,8 @@ NormalEquations solveLevel(LevelSolver& solver, Eigen::Isometry3d& T, const Dens
 }  // namespace
 
 DenseResult refineDense(const DensePyramid& cur, const DensePyramid& ref,
-                        const std::vector<Eigen::Isometry3d>& starts, const DenseParams& p) {
+                        const std::vector<Eigen::Isometry3d>& starts, const DenseParams& p,
+                        const ReadoutMotion& cur_readout, const ReadoutMotion& ref_readout) {
   DenseResult out;
   if (starts.empty() || cur.levels.empty() || cur.levels.size() != ref.levels.size()) {
     out.detail = "dense refinement: no start or pyramids of different depth";
@@ -267,7 +268,7 @@ DenseResult refineDense(const DensePyramid& cur, const DensePyramid& ref,
   std::vector<LevelSolver> solvers;
   for (std::size_t l = 0; l < cur.levels.size(); ++l)
     solvers.emplace_back(cur.levels[l], ref.levels[l], p, l == 0 ? p.geometric_stride : 1,
-                         cur.readout_motion, ref.readout_motion);
+                         cur_readout, ref_readout);
   // every start is refined coarse to fine; the best score at the finest level wins
   double best = 1e300;
   Eigen::Isometry3d T = starts.front();

@@ -110,10 +110,8 @@ FrameResult RgbdOdometry::track(const mrpt::obs::CObservation3DRangeScan& obs) {
   report(m_registration->prepare(cur), r);
   if (!m_ref) return accept(std::move(cur), m_pose, std::move(r), true);
   // Lines 4-15: register against the reference, on the path the registration chooses.
-  if (!m_after_gap) {
-    cur.guess = toIsometry((m_pose + m_velocity) - m_ref->pose);
-    cur.velocity = m_twist;
-  }
+  if (!m_after_gap) cur.guess = toIsometry((m_pose + m_velocity) - m_ref->pose);
+  cur.velocity = m_twist;  // none after a time gap or a failure
   auto reg = m_registration->align(cur, m_ref->frame);
   report(reg, r);
   if (!reg.ok()) return failed(std::move(cur), std::move(r), reg.status, reg.detail);
@@ -138,6 +136,7 @@ FrameResult RgbdOdometry::predict(FrameResult r, FrameResult::Status why, std::s
   r.detail = std::move(detail);
   r.inlier_points.clear();
   m_previous_registered = false;
+  m_twist.reset();  // measured again once two frames in a row have registered
   ++m_failures;
   if (m_params.on_failure == FailurePolicy::ConstantVelocity) m_pose = m_pose + m_velocity;
   r.pose = m_pose;
@@ -189,11 +188,15 @@ FrameResult RgbdOdometry::accept(Frame frame, const mrpt::poses::CPose3D& pose, 
   // (nor across a time gap)
   if (m_ref && m_previous_registered && !m_after_gap) {
     m_velocity = pose - m_pose;
-    if (m_interval > 0) {  // over the time between the two frames
+    // over the time between the two frames, unless a jittered stamp puts them much nearer than
+    // the mean interval (1 cm in 1 ms would be 10 m/s): then the velocity stays as it was
+    if (m_interval > 0 && m_interval >= 0.5 * m_mean_interval) {
       const Eigen::Isometry3d M = toIsometry(m_velocity);
       const Eigen::AngleAxisd a(M.rotation());
       m_twist.emplace();
       *m_twist << M.translation() / m_interval, a.angle() / m_interval * a.axis();
+      // a reference without one (the first frame, or taken after failures) moved much the same
+      if (m_ref && !m_ref->frame.velocity) m_ref->frame.velocity = m_twist;
     }
   }
   m_previous_registered = true;
@@ -201,7 +204,7 @@ FrameResult RgbdOdometry::accept(Frame frame, const mrpt::poses::CPose3D& pose, 
   m_after_gap = false;
   m_pose = pose;
   if (keyframe) {
-    frame.velocity = m_twist;  // measured now: this frame's own motion
+    frame.velocity = m_twist;  // this frame's own motion, when measured now
     m_ref = Reference{std::move(frame), pose};
   }
   r.pose = m_pose;

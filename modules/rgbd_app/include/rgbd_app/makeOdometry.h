@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "rgbd_core/JobPaths.h"
+#include "rgbd_io/FrameSource.h"
 #include "rgbd_odometry/OdometryParams.h"
 #include "rgbd_odometry/RgbdOdometry.h"
 #include "rgbd_slam/SlamParams.h"
@@ -18,6 +19,10 @@ namespace hrgbd {
  * (strictly: bad values are ConfigErrors). */
 std::unique_ptr<RgbdOdometry> makeOdometry(const OdometryParams& params,
                                            const mrpt::config::CConfigFileBase& cfg);
+
+/** `params` with the rolling shutter of the source's camera ([Dense] rolling_shutter_ms), when
+ * the source knows it and the INI leaves that key 0. */
+OdometryParams withSourceCamera(OdometryParams params, const FrameSource& source);
 
 /** [Slam] from `cfg`, with the command line's --slam (`on`) and --no-slam (`off`) over its
  * `enabled`. Off for a baseline or peer `method`: loops are verified with the product's

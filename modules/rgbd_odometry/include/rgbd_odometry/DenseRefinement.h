@@ -46,7 +46,8 @@ struct DenseParams : public Params<DenseParams> {
   double min_normal_spread = 0.1;
   /** [ms] readout time of a rolling shutter, first row to last, of colour and depth alike; each
    * row's points are moved to the frame time (the middle row) with the camera's velocity.
-   * 0 = a global shutter. */
+   * 0 = a global shutter, unless the input knows its camera's (the playback then takes that:
+   * [TumSource] rolling_shutter_ms). */
   double rolling_shutter_ms = 0;
 
   template <class P, class V>
@@ -97,10 +98,11 @@ struct DenseLevel {
 /** Levels from the finest used (index 0) to the coarsest. */
 struct DensePyramid {
   std::vector<DenseLevel> levels;
-  /** The camera's motion during the readout, first row to last (translation [m], rotation
-   * vector [rad]) in the camera frame: zero for a global shutter or an unknown velocity. */
-  Eigen::Matrix<double, 6, 1> readout_motion = Eigen::Matrix<double, 6, 1>::Zero();
 };
+
+/** A camera's motion during one readout of a rolling shutter, first row to last: translation
+ * [m] and rotation vector [rad] in the camera frame. Zero: a global shutter or unknown. */
+using ReadoutMotion = Eigen::Matrix<double, 6, 1>;
 
 DensePyramid buildDensePyramid(const RgbdImage& image, const DenseParams& params);
 
@@ -131,6 +133,8 @@ struct DenseResult {
  * (most points paired with small residuals): a wrong sparse estimate loses against the motion
  * prediction. Not ok (T = starts[0]) when the winner has fewer than min_pixels pairs in all. */
 DenseResult refineDense(const DensePyramid& cur, const DensePyramid& ref,
-                        const std::vector<Eigen::Isometry3d>& starts, const DenseParams& params);
+                        const std::vector<Eigen::Isometry3d>& starts, const DenseParams& params,
+                        const ReadoutMotion& cur_readout = ReadoutMotion::Zero(),
+                        const ReadoutMotion& ref_readout = ReadoutMotion::Zero());
 
 }  // namespace hrgbd
