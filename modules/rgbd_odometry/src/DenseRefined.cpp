@@ -38,8 +38,10 @@ RegistrationResult DenseRefined::align(Frame& cur, Frame& ref) {
   // mostly cancel, and undoing one alone would leave the other's whole
   const double readout = m_params.rolling_shutter_ms * 1e-3;  // [s]
   ReadoutMotion cur_readout = ReadoutMotion::Zero(), ref_readout = ReadoutMotion::Zero();
-  if (readout > 0 && cur.velocity && ref.velocity)
-    cur_readout = *cur.velocity * readout, ref_readout = *ref.velocity * readout;
+  if (readout > 0 && cur.velocity && ref.velocity) {
+    cur_readout = *cur.velocity * readout;
+    ref_readout = *ref.velocity * readout;
+  }
   const DenseResult d = timed(r.seen.ms.refine, [&] {
     return refineDense(*cur.dense, *ref.dense, starts, m_params, cur_readout, ref_readout);
   });

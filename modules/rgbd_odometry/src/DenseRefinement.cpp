@@ -50,10 +50,13 @@ struct CurrentPoint {
   bool geometric;
 };
 
-// A point seen at row fraction s (-0.5 first row, 0.5 last) of a frame whose camera moved by
-// `m` (translation, rotation vector) during the readout, in the camera frame of the middle row
-// (first order: the motion of one readout is small).
-Eigen::Vector3d toMiddleRow(const Eigen::Vector3d& P, double s, const Vector6d& m) {
+// The time of image row v (pixel centres at integers) of `rows` in a readout: -0.5 the first
+// row, 0.5 the last, 0 the frame time.
+double rowFraction(double v, int rows) { return (v + 0.5) / rows - 0.5; }
+
+// A point seen at row fraction s of a frame whose camera moved by `m` during the readout, in
+// the camera frame of the middle row (first order: the motion of one readout is small).
+Eigen::Vector3d toMiddleRow(const Eigen::Vector3d& P, double s, const ReadoutMotion& m) {
   return P + s * (m.tail<3>().cross(P) + m.head<3>());
 }
 
@@ -62,12 +65,13 @@ Eigen::Vector3d toMiddleRow(const Eigen::Vector3d& P, double s, const Vector6d& 
 // (Leaving out the pixels without texture in the current image as well, unless they have the
 // point-to-plane term, was 7 % faster and better on teddy, 0.0097 -> 0.0077 m, but worse on the
 // fast rotation of fr1/rpy, 0.0260 -> 0.0280 m: motion blur hides texture the reference has.)
-std::vector<CurrentPoint> currentPoints(const DenseLevel& c, int stride, const Vector6d& readout) {
+std::vector<CurrentPoint> currentPoints(const DenseLevel& c, int stride,
+                                        const ReadoutMotion& readout) {
   std::vector<CurrentPoint> pts;
   pts.reserve(c.depth.total());
   const bool rolling = !readout.isZero();
   for (int v = 0; v < c.depth.rows; ++v) {
-    const double s = (v + 0.5) / c.depth.rows - 0.5;
+    const double s = rowFraction(v, c.depth.rows);
     for (int u = 0; u < c.depth.cols; ++u) {
       const float z = c.depth.at<float>(v, u);
       if (!std::isfinite(z)) continue;
@@ -94,7 +98,7 @@ struct NormalEquations {
 class LevelSolver {
  public:
   LevelSolver(const DenseLevel& cur, const DenseLevel& ref, const DenseParams& p, int stride,
-              const Vector6d& cur_readout, const Vector6d& ref_readout)
+              const ReadoutMotion& cur_readout, const ReadoutMotion& ref_readout)
       : m_ref(ref),
         m_p(p),
         m_points(currentPoints(cur, stride, cur_readout)),
@@ -118,7 +122,7 @@ class LevelSolver {
         pt.at_reference_rows = pt.P;
         continue;
       }
-      const double s = (c.fy * X.y() / X.z() + c.cy + 0.5) / c.height - 0.5;
+      const double s = rowFraction(c.fy * X.y() / X.z() + c.cy, c.height);
       pt.at_reference_rows = pt.P - Rt * (toMiddleRow(X, s, m_ref_readout) - X);
     }
   }
@@ -213,7 +217,7 @@ class LevelSolver {
   const DenseLevel& m_ref;
   const DenseParams& m_p;
   std::vector<CurrentPoint> m_points;
-  Vector6d m_ref_readout;              //!< the reference's motion during its readout
+  ReadoutMotion m_ref_readout;         //!< the reference's motion during its readout
   std::size_t m_geometric_points = 0;  //!< of them, with a point-to-plane term
   /** each point-to-plane pair stands for stride^2 pixels: the terms keep their balance */
   double m_geometric_weight = 0;
