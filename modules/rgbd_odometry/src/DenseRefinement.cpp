@@ -83,6 +83,25 @@ std::vector<CurrentPoint> currentPoints(const DenseLevel& c, int stride,
   return pts;
 }
 
+// The median of `a` (reordered); `empty` if there is none.
+double median(std::vector<float>& a, double empty) {
+  if (a.empty()) return empty;
+  std::nth_element(a.begin(), a.begin() + a.size() / 2, a.end());
+  return a[a.size() / 2];
+}
+
+// The noise sigmas that normalise the residuals at one level.
+struct NoiseScales {
+  double photometric = 1;  //!< [grey levels]
+  double depth_noise = 0;  //!< [1/m] depth sigma / z^2
+};
+
+/** The smallest depth noise factor taken from the residuals, as a share of the model's: keeps
+ * the point-to-plane term from swamping the intensity term on exact renders. */
+constexpr double kCleanestDepth = 0.02;
+/** Fewer point-to-plane pairs give no measured scale: the model's. */
+constexpr std::size_t kMinDepthPairs = 100;
+
 // The Gauss-Newton system of one evaluation: H delta = -b, and the mean robust cost.
 struct NormalEquations {
   Matrix6d H = Matrix6d::Zero();
@@ -127,20 +146,36 @@ class LevelSolver {
     }
   }
 
-  // Photometric noise scale at T: 1.4826 x the median absolute residual (at least one level).
-  double photometricSigma(const Eigen::Isometry3d& T) const {
-    std::vector<float> a;
-    a.reserve(m_points.size());
-    forEachPair(
-        T, [&](const Eigen::Vector3d&, double, double u, double v, int, int, float, float grey,
-               bool) { a.push_back(std::abs(Bilinear(m_ref.grey, u, v)(m_ref.grey) - grey)); });
-    if (a.empty()) return 1;
-    std::nth_element(a.begin(), a.begin() + a.size() / 2, a.end());
-    return std::max(1.0, 1.4826 * a[a.size() / 2]);
+  // The noise scales at T, from one pass over the pairs (1.4826 x the median absolute residual):
+  // the intensity's (at least one grey level), and the depth noise factor: the model's, or, when
+  // the point-to-plane residuals say the depth is much cleaner (see clean_depth_fraction), theirs.
+  NoiseScales noiseScales(const Eigen::Isometry3d& T) const {
+    std::vector<float> photo, depth;  // |residual|; |point-to-plane residual| / z^2 / sqrt(2)
+    const bool measure_depth = m_p.clean_depth_fraction > 0 && m_p.geometric_weight > 0;
+    photo.reserve(m_points.size());
+    if (measure_depth) depth.reserve(m_geometric_points);
+    const auto& c = m_ref.cam;
+    forEachPair(T, [&](const Eigen::Vector3d& P, double iz, double u, double v, int ui, int vi,
+                       float zr, float grey, bool geometric) {
+      photo.push_back(std::abs(Bilinear(m_ref.grey, u, v)(m_ref.grey) - grey));
+      if (!measure_depth || !geometric || !std::isfinite(zr)) return;
+      const cv::Vec3f nv = m_ref.normals.at<cv::Vec3f>(vi, ui);
+      if (!std::isfinite(nv[0])) return;
+      const Eigen::Vector3d nr(nv[0], nv[1], nv[2]);
+      depth.push_back(static_cast<float>(std::abs(nr.dot(P - c.backProject(ui, vi, zr))) * iz * iz /
+                                         std::sqrt(2.0)));
+    });
+    NoiseScales s;
+    s.photometric = std::max(1.0, 1.4826 * median(photo, 1.0 / 1.4826));
+    s.depth_noise = m_p.depth_noise;
+    const double measured = 1.4826 * median(depth, m_p.depth_noise);
+    if (depth.size() >= kMinDepthPairs && measured < m_p.clean_depth_fraction * m_p.depth_noise)
+      s.depth_noise = std::max(measured, kCleanestDepth * m_p.depth_noise);
+    return s;
   }
 
   // Normal equations of the Huber-weighted, noise-normalised residuals of both terms at T.
-  NormalEquations normalEquations(const Eigen::Isometry3d& T, double photo_sigma) const {
+  NormalEquations normalEquations(const Eigen::Isometry3d& T, const NoiseScales& scales) const {
     NormalEquations n;
     const double k = m_p.huber, cap = 2.5 * k * k;  // Huber cost at e = 3k
     // inv_sigma: 1 / the residual's noise sigma
@@ -158,9 +193,9 @@ class LevelSolver {
       n.score += std::min(rho, cap);
     };
     const auto& c = m_ref.cam;
-    const double inv_photo_sigma = 1 / photo_sigma;
+    const double inv_photo_sigma = 1 / scales.photometric;
     // 1 / the sigma of a point-to-plane residual at 1 m (below)
-    const double inv_depth_sigma = 1 / (std::sqrt(2.0) * m_p.depth_noise);
+    const double inv_depth_sigma = 1 / (std::sqrt(2.0) * scales.depth_noise);
     forEachPair(T, [&](const Eigen::Vector3d& P, double iz, double u, double v, int ui, int vi,
                        float zr, float grey, bool geometric) {
       const Bilinear at(m_ref.grey, u, v);
@@ -236,10 +271,10 @@ Eigen::Isometry3d expSe3(const Vector6d& d) {
 // Gauss-Newton at one level from T; returns the last evaluation: at the returned T, or one
 // converged step (under 1e-4) before it.
 NormalEquations solveLevel(LevelSolver& solver, Eigen::Isometry3d& T, const DenseParams& p,
-                           int& iterations) {
+                           int& iterations, NoiseScales& scales) {
   solver.startAt(T);
-  const double photo_sigma = solver.photometricSigma(T);  // fixed per level
-  NormalEquations n = solver.normalEquations(T, photo_sigma);
+  scales = solver.noiseScales(T);  // fixed per level
+  NormalEquations n = solver.normalEquations(T, scales);
   for (int it = 0; it < p.iterations && n.photometric + n.geometric >= 6; ++it) {
     const Vector6d delta = n.H.ldlt().solve(-n.b);
     if (!delta.allFinite()) break;
@@ -250,7 +285,7 @@ NormalEquations solveLevel(LevelSolver& solver, Eigen::Isometry3d& T, const Dens
       T = next;
       break;
     }
-    NormalEquations n2 = solver.normalEquations(next, photo_sigma);
+    NormalEquations n2 = solver.normalEquations(next, scales);
     ++iterations;
     if (n2.cost > n.cost) break;  // a step uphill: keep the previous estimate
     T = next, n = n2;
@@ -274,13 +309,34 @@ DenseResult refineDense(const DensePyramid& cur, const DensePyramid& ref,
     solvers.emplace_back(cur.levels[l], ref.levels[l], p, l == 0 ? p.geometric_stride : 1,
                          cur_readout, ref_readout);
   // every start is refined coarse to fine; the best score at the finest level wins
+  struct Refined {
+    Eigen::Isometry3d T;
+    NormalEquations n;
+    NoiseScales scales;              // at the finest level
+    Eigen::Isometry3d finest_start;  // where the finest level started (its startAt())
+  };
+  std::vector<Refined> refined;
+  for (const auto& start : starts) {
+    Refined r{start, {}, {}, start};
+    for (int l = static_cast<int>(solvers.size()) - 1; l >= 0; --l) {
+      if (l == 0) r.finest_start = r.T;
+      r.n = solveLevel(solvers[l], r.T, p, out.iterations, r.scales);
+    }
+    refined.push_back(std::move(r));
+  }
+  // scored on one depth scale, the most lenient of the starts': a start still far off measures
+  // the model's, and its rival judged on an exact depth's would lose on the capped costs
+  double depth_noise = 0;
+  for (const auto& r : refined) depth_noise = std::max(depth_noise, r.scales.depth_noise);
   double best = 1e300;
   Eigen::Isometry3d T = starts.front();
-  for (std::size_t i = 0; i < starts.size(); ++i) {
-    Eigen::Isometry3d Ti = starts[i];
-    NormalEquations n;
-    for (int l = static_cast<int>(solvers.size()) - 1; l >= 0; --l)
-      n = solveLevel(solvers[l], Ti, p, out.iterations);
+  for (std::size_t i = 0; i < refined.size(); ++i) {
+    const auto& [Ti, n0, scales, finest_start] = refined[i];
+    NormalEquations n = n0;
+    if (scales.depth_noise < depth_noise) {
+      solvers.front().startAt(finest_start);  // this start's rolling-shutter correction
+      n = solvers.front().normalEquations(Ti, {scales.photometric, depth_noise});
+    }
     if (n.score < best) {
       best = n.score, T = Ti, out.start = i;
       out.photometric_pairs = n.photometric, out.geometric_pairs = n.geometric;

@@ -31,6 +31,12 @@ struct DenseParams : public Params<DenseParams> {
   int geometric_stride = 2;
   /** [1/m] Kinect depth noise sigma = depth_noise * z^2 (Khoshelham & Elberink 2012: ~1.4e-3). */
   double depth_noise = 0.0015;
+  /** When the point-to-plane residuals' scale at a level's start (from at least 100 pairs) is
+   * below this share of depth_noise, the depth is far cleaner than a Kinect's (a render) and that
+   * scale replaces the model's (never below 1/50 of it), so that the exact term is not outweighed
+   * by the intensity term and its biases at depth edges. At the finest level real Kinect frames
+   * measured 0.38-1.6 of the model (other sensors: not measured). 0 = always the model. */
+  double clean_depth_fraction = 0.25;
   double max_depth = 5.0;  //!< [m] farther depth is not used
   /** [m] a warped point this far from the reference depth is occluded or disoccluded: left out */
   double max_depth_difference = 0.07;
@@ -61,6 +67,9 @@ struct DenseParams : public Params<DenseParams> {
     HRGBD_PARAM(geometric_stride, "point-to-plane term on every n-th row and column (finest level)",
                 Range::closed(1, 8));
     HRGBD_PARAM(depth_noise, "[1/m] depth sigma = depth_noise z^2", Range::above(0));
+    HRGBD_PARAM(clean_depth_fraction,
+                "measured depth scale below this share of the model's replaces it (0 = never)",
+                Range::closed(0, 1));
     HRGBD_PARAM(max_depth, "[m] farther depth is not used", Range::above(0));
     HRGBD_PARAM(max_depth_difference, "[m] occlusion gate between warped and reference depth",
                 Range::above(0));
