@@ -25,7 +25,7 @@ namespace {
 
 /** [ms] A recording that produces no frame for this long before its recorded end is broken. */
 constexpr int kFrameTimeoutMs = 5000;
-/** Outlasts a frame hand-over of OpenNI2's file driver (see ~Impl). */
+/** Waited at every close for a frame hand-over of OpenNI2's file driver to end (see ~Impl). */
 constexpr std::chrono::milliseconds kHandOverMs{50};
 
 std::runtime_error fail(const std::string& path, const std::string& what) {
