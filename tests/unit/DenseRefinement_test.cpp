@@ -1,69 +1,19 @@
 // The dense refinement on rendered pairs with an exact relative pose: convergence from a few cm
-// and degrees off, a correct estimate left in place, the better of two starts, no evaluation
-// spent on a converged estimate, and no refinement without anything to refine with; a result of
-// the prediction alone is no sparse fit.
+// and degrees off, a correct estimate left in place, exact depth weighted by its own scale and
+// Kinect-noisy depth by the model's, the better of two starts, no evaluation spent on a converged
+// estimate, and no refinement without anything to refine with; a result of the prediction alone
+// is no sparse fit. The rolling shutter: DenseRollingShutter_test.cpp.
 #include "rgbd_odometry/DenseRefinement.h"
 
 #include <gtest/gtest.h>
-#include <mrpt/core/bits_math.h>
 
 #include <algorithm>
-#include <opencv2/imgproc.hpp>
 #include <random>
-#include <utility>
 
-#include "rgbd_odometry/FeatureRegistration.h"
-#include "rgbd_odometry/RigidFit.h"
-#include "rgbd_sim/Render.h"
-#include "rgbd_sim/Simulator.h"
+#include "DenseRenders.h"
 
-namespace {
-
+using namespace hrgbd::test;  // NOLINT: the rendered pairs' helpers
 using Eigen::Isometry3d;
-using hrgbd::DensePyramid;
-
-hrgbd::RgbdImage render(const hrgbd::sim::Scene& scene, const mrpt::poses::CPose3D& pose) {
-  const hrgbd::PinholeCamera cam;
-  const auto ideal = hrgbd::sim::renderIdeal(scene, pose, cam);
-  hrgbd::RgbdImage f;
-  cv::Mat grey;
-  cv::cvtColor(ideal.colour, grey, cv::COLOR_RGB2GRAY);
-  grey.convertTo(f.grey, CV_8U, 255);
-  f.depth = ideal.depth;
-  f.cam = cam;
-  return f;
-}
-
-struct Pair {
-  DensePyramid cur, ref;
-  Isometry3d truth;  // current -> reference
-};
-
-Pair renderPair(const std::string& scene_type, const mrpt::poses::CPose3D& motion,
-                const hrgbd::DenseParams& p = {}) {
-  const auto scene = hrgbd::sim::makeScene(scene_type, false);
-  const auto ref_pose =
-      hrgbd::sim::lookAt(Eigen::Vector3d(0, 0.0, 1.2), Eigen::Vector3d(0, 1.3, 0.75));
-  const auto cur_pose = ref_pose + motion;
-  return {hrgbd::buildDensePyramid(render(scene, cur_pose), p),
-          hrgbd::buildDensePyramid(render(scene, ref_pose), p), hrgbd::toIsometry(motion)};
-}
-
-// Translation [m] and rotation [deg] between two motions.
-std::pair<double, double> error(const Isometry3d& a, const Isometry3d& b) {
-  const Isometry3d d = a.inverse() * b;
-  return {d.translation().norm(), mrpt::RAD2DEG(Eigen::AngleAxisd(d.rotation()).angle())};
-}
-
-Isometry3d perturbed(const Isometry3d& T, double metres, double deg) {
-  return T * hrgbd::toIsometry(mrpt::poses::CPose3D(metres, -metres, metres / 2, mrpt::DEG2RAD(deg),
-                                                    mrpt::DEG2RAD(-deg), 0));
-}
-
-const mrpt::poses::CPose3D kMotion(0.03, -0.01, 0.02, mrpt::DEG2RAD(2.0), mrpt::DEG2RAD(-1.0),
-                                   mrpt::DEG2RAD(1.5));
-
-}  // namespace
 
 TEST(DenseRefinement, ConvergesFromCentimetresAndDegreesOff) {
   const auto pair = renderPair("desk", kMotion);
@@ -122,8 +72,7 @@ TEST(DenseRefinement, ExactDepthIsWeightedByItsOwnScale) {
 // there; a Kinect's is correlated over its 9x9 matching window.)
 TEST(DenseRefinement, KinectNoisyDepthKeepsTheModelsScale) {
   const auto scene = hrgbd::sim::makeScene("desk", false);
-  const auto ref_pose =
-      hrgbd::sim::lookAt(Eigen::Vector3d(0, 0.0, 1.2), Eigen::Vector3d(0, 1.3, 0.75));
+  const auto ref_pose = referencePose();
   hrgbd::DenseParams p;
   p.levels = 1, p.finest_level = 0;
   std::mt19937 rng(7);
@@ -204,27 +153,11 @@ TEST(DenseRefinement, TinyImagesGiveFewerLevelsAndNoRefinement) {
   EXPECT_FALSE(hrgbd::refineDense(one, one, {Isometry3d::Identity()}, p).ok);  // 9 < min_pixels
 }
 
-namespace {
-
-// A sparse registration that answers with a scripted result.
-class ScriptedSparse : public hrgbd::Registration {
- public:
-  explicit ScriptedSparse(hrgbd::RegistrationResult r) : m_r(std::move(r)) {}
-  hrgbd::FrameFeatures prepare(hrgbd::Frame&) override { return {}; }
-  hrgbd::RegistrationResult align(hrgbd::Frame&, hrgbd::Frame&) override { return m_r; }
-
- private:
-  hrgbd::RegistrationResult m_r;
-};
-
-}  // namespace
-
 TEST(DenseRefined, AResultOfThePredictionAloneIsNotASparseFit) {
   // The SLAM mode accepts a loop only on a sparse fit that succeeded: the refinement from the
   // prediction alone must say that it is not one, though it registers.
   const auto scene = hrgbd::sim::makeScene("desk", false);
-  const auto ref_pose =
-      hrgbd::sim::lookAt(Eigen::Vector3d(0, 0.0, 1.2), Eigen::Vector3d(0, 1.3, 0.75));
+  const auto ref_pose = referencePose();
   hrgbd::Frame cur, ref;
   cur.image = render(scene, ref_pose + kMotion);
   ref.image = render(scene, ref_pose);
@@ -278,7 +211,7 @@ TEST(DenseRefinement, SkippingUntexturedCellsChangesNothing) {
   hrgbd::DenseParams p;
   p.min_gradient = 8;  // many cells below it on the desk renders
   const auto pair = renderPair("desk", kMotion, p);
-  DensePyramid every_cell = pair.ref;
+  hrgbd::DensePyramid every_cell = pair.ref;
   std::size_t skipped = 0;
   for (auto& level : every_cell.levels) {
     skipped += level.textured.total() - static_cast<std::size_t>(cv::countNonZero(level.textured));
@@ -324,98 +257,4 @@ TEST(DenseRefinement, SkippingUntexturedCellsChangesNothing) {
   const auto c = bothWays(lower).first;
   ASSERT_TRUE(c.ok) << c.detail;
   EXPECT_GT(c.photometric_pairs, a.photometric_pairs);
-}
-
-namespace {
-
-// Two rendered frames from a rolling shutter: each frame's rows seen from its pose moved by
-// `readout` (translation, rotation vector over the readout) times the row's time from the
-// middle row.
-struct RollingPair {
-  hrgbd::Frame cur, ref;
-  Isometry3d truth;  // current -> reference
-};
-
-RollingPair renderRollingPair(const hrgbd::ReadoutMotion& readout) {
-  const auto scene = hrgbd::sim::makeScene("desk", false);
-  const hrgbd::PinholeCamera cam;
-  auto rows = [&](const mrpt::poses::CPose3D& middle) {
-    auto at = [&](double s) {
-      Isometry3d M = Isometry3d::Identity();
-      M.translation() = s * readout.head<3>();
-      M.linear() = Eigen::AngleAxisd(s * readout.tail<3>().norm(), readout.tail<3>().normalized())
-                       .toRotationMatrix();
-      return middle + hrgbd::toPose(M);
-    };
-    const auto ideal = hrgbd::sim::renderIdeal(scene, at(-0.5), cam, at(0.5));
-    hrgbd::Frame f;
-    cv::Mat grey;
-    cv::cvtColor(ideal.colour, grey, cv::COLOR_RGB2GRAY);
-    grey.convertTo(f.image.grey, CV_8U, 255);
-    f.image.depth = ideal.depth;
-    f.image.cam = cam;
-    f.dense = hrgbd::buildDensePyramid(f.image, hrgbd::DenseParams());
-    return f;
-  };
-  const auto ref_pose =
-      hrgbd::sim::lookAt(Eigen::Vector3d(0, 0.0, 1.2), Eigen::Vector3d(0, 1.3, 0.75));
-  return {rows(ref_pose + kMotion), rows(ref_pose), hrgbd::toIsometry(kMotion)};
-}
-
-// fr1/rpy-like: 1.5 deg and 1 cm during a 30 ms readout (50 deg/s, 0.33 m/s)
-hrgbd::ReadoutMotion rpyReadout() {
-  hrgbd::ReadoutMotion readout;
-  readout << 0.01, 0, 0, 0, mrpt::DEG2RAD(1.5), 0;
-  return readout;
-}
-
-// error(a, b) in one number: metres + degrees / 100
-double combined(const Isometry3d& a, const Isometry3d& b) {
-  const auto [t, r] = error(a, b);
-  return t + r / 100;
-}
-
-}  // namespace
-
-TEST(DenseRefinement, UndoesARollingShutterWithTheReadoutMotion) {
-  const auto readout = rpyReadout();
-  const auto pair = renderRollingPair(readout);
-  const Isometry3d start = perturbed(pair.truth, 0.01, 1.0);
-  const hrgbd::DenseParams p;
-  const auto undone =
-      hrgbd::refineDense(*pair.cur.dense, *pair.ref.dense, {start}, p, readout, readout);
-  ASSERT_TRUE(undone.ok) << undone.detail;
-  const auto skewed = hrgbd::refineDense(*pair.cur.dense, *pair.ref.dense, {start}, p);
-  ASSERT_TRUE(skewed.ok) << skewed.detail;
-  // as near as without a rolling shutter (LeavesACorrectEstimateInPlace), and nearer than the
-  // skewed frames' result (measured 0.30 mm, 0.013 deg against 0.98 mm, 0.083 deg)
-  const auto [t, r] = error(undone.T, pair.truth);
-  EXPECT_LT(t, 0.0007);
-  EXPECT_LT(r, 0.03);
-  EXPECT_GT(combined(skewed.T, pair.truth), 2 * combined(undone.T, pair.truth));
-}
-
-TEST(DenseRefined, UndoesTheRollingShutterOfBothFramesOrOfNeither) {
-  auto pair = renderRollingPair(rpyReadout());
-  hrgbd::RegistrationResult sparse;
-  sparse.status = hrgbd::FrameResult::Status::Ok;
-  sparse.sparse_ok = true;
-  sparse.T = perturbed(pair.truth, 0.01, 1.0);
-  auto refined = [&](double readout_ms) {
-    hrgbd::DenseParams p;
-    p.rolling_shutter_ms = readout_ms;
-    hrgbd::DenseRefined dense(std::make_unique<ScriptedSparse>(sparse), p);
-    const auto r = dense.align(pair.cur, pair.ref);
-    EXPECT_TRUE(r.ok()) << r.detail;
-    return r.T;
-  };
-  const Isometry3d skewed = refined(0);
-  // the frames' velocities: the readout's motion over 30 ms
-  pair.cur.velocity = pair.ref.velocity = rpyReadout() / 0.030;
-  const Isometry3d undone = refined(30);
-  EXPECT_GT(combined(skewed, pair.truth), 2 * combined(undone, pair.truth));
-  EXPECT_TRUE(refined(0).isApprox(skewed, 1e-12));  // 0 ms: a global shutter
-  // a reference of unknown velocity (the first frame; a keyframe in a loop): neither is undone
-  pair.ref.velocity.reset();
-  EXPECT_TRUE(refined(30).isApprox(skewed, 1e-12));
 }
