@@ -6,6 +6,7 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace hrgbd {
 namespace {
@@ -83,9 +84,8 @@ std::vector<CurrentPoint> currentPoints(const DenseLevel& c, int stride,
   return pts;
 }
 
-// The median of `a` (reordered); `empty` if there is none.
-double median(std::vector<float>& a, double empty) {
-  if (a.empty()) return empty;
+// The median of `a` (not empty; reordered).
+double median(std::vector<float>& a) {
   std::nth_element(a.begin(), a.begin() + a.size() / 2, a.end());
   return a[a.size() / 2];
 }
@@ -154,23 +154,21 @@ class LevelSolver {
     const bool measure_depth = m_p.clean_depth_fraction > 0 && m_p.geometric_weight > 0;
     photo.reserve(m_points.size());
     if (measure_depth) depth.reserve(m_geometric_points);
-    const auto& c = m_ref.cam;
     forEachPair(T, [&](const Eigen::Vector3d& P, double iz, double u, double v, int ui, int vi,
                        float zr, float grey, bool geometric) {
       photo.push_back(std::abs(Bilinear(m_ref.grey, u, v)(m_ref.grey) - grey));
-      if (!measure_depth || !geometric || !std::isfinite(zr)) return;
-      const cv::Vec3f nv = m_ref.normals.at<cv::Vec3f>(vi, ui);
-      if (!std::isfinite(nv[0])) return;
-      const Eigen::Vector3d nr(nv[0], nv[1], nv[2]);
-      depth.push_back(static_cast<float>(std::abs(nr.dot(P - c.backProject(ui, vi, zr))) * iz * iz /
-                                         std::sqrt(2.0)));
+      if (!measure_depth || !geometric) return;
+      if (const auto plane = tangentPlane(P, ui, vi, zr))
+        depth.push_back(static_cast<float>(std::abs(plane->distance) * iz * iz / std::sqrt(2.0)));
     });
     NoiseScales s;
-    s.photometric = std::max(1.0, 1.4826 * median(photo, 1.0 / 1.4826));
+    s.photometric = photo.empty() ? 1 : std::max(1.0, 1.4826 * median(photo));
     s.depth_noise = m_p.depth_noise;
-    const double measured = 1.4826 * median(depth, m_p.depth_noise);
-    if (depth.size() >= kMinDepthPairs && measured < m_p.clean_depth_fraction * m_p.depth_noise)
-      s.depth_noise = std::max(measured, kCleanestDepth * m_p.depth_noise);
+    if (depth.size() >= kMinDepthPairs) {
+      const double measured = 1.4826 * median(depth);
+      if (measured < m_p.clean_depth_fraction * m_p.depth_noise)
+        s.depth_noise = std::max(measured, kCleanestDepth * m_p.depth_noise);
+    }
     return s;
   }
 
@@ -209,16 +207,14 @@ class LevelSolver {
           ++n.photometric;
         }
       }
-      if (m_p.geometric_weight <= 0 || !geometric || !std::isfinite(zr)) return;
-      const cv::Vec3f nv = m_ref.normals.at<cv::Vec3f>(vi, ui);
-      if (!std::isfinite(nv[0])) return;
-      const Eigen::Vector3d nr(nv[0], nv[1], nv[2]);
-      const Eigen::Vector3d V = c.backProject(ui, vi, zr);
+      if (m_p.geometric_weight <= 0 || !geometric) return;
+      const auto plane = tangentPlane(P, ui, vi, zr);
+      if (!plane) return;
       // both depths are noisy: the sigma of the difference of two readings at about this depth
       const double inv_sigma = iz * iz * inv_depth_sigma;
-      add(jacobian(P, nr), nr.dot(P - V), inv_sigma, m_geometric_weight);
+      add(jacobian(P, plane->normal), plane->distance, inv_sigma, m_geometric_weight);
       ++n.geometric;
-      n.normals.noalias() += nr * nr.transpose();
+      n.normals.noalias() += plane->normal * plane->normal.transpose();
     });
     n.H = n.H.selfadjointView<Eigen::Lower>();
     const std::size_t pairs = n.photometric + n.geometric;
@@ -230,6 +226,21 @@ class LevelSolver {
   }
 
  private:
+  struct TangentPlane {
+    Eigen::Vector3d normal;  //!< the reference's, unit
+    double distance;         //!< [m] of the point from the plane, signed
+  };
+  // The reference's tangent plane at pixel (ui, vi) of depth zr, and P's distance from it; none
+  // where the depth or the normal is unknown.
+  std::optional<TangentPlane> tangentPlane(const Eigen::Vector3d& P, int ui, int vi,
+                                           float zr) const {
+    if (!std::isfinite(zr)) return std::nullopt;
+    const cv::Vec3f nv = m_ref.normals.at<cv::Vec3f>(vi, ui);
+    if (!std::isfinite(nv[0])) return std::nullopt;
+    const Eigen::Vector3d n(nv[0], nv[1], nv[2]);
+    return TangentPlane{n, n.dot(P - m_ref.cam.backProject(ui, vi, zr))};
+  }
+
   // Calls f(P, 1 / P.z, u, v, ui, vi, z_ref, grey, geometric) for every current point that T moves
   // into the reference image without landing in front of or behind the reference depth (occlusion
   // gate; unknown reference depth passes, for the photometric term).

@@ -196,7 +196,7 @@ FrameResult RgbdOdometry::accept(Frame frame, const mrpt::poses::CPose3D& pose, 
       m_twist.emplace();
       *m_twist << M.translation() / m_interval, a.angle() / m_interval * a.axis();
       // a reference without one (the first frame, or taken after failures) moved much the same
-      if (m_ref && !m_ref->frame.velocity) m_ref->frame.velocity = m_twist;
+      if (!m_ref->frame.velocity) m_ref->frame.velocity = m_twist;
     }
   }
   m_previous_registered = true;
