@@ -79,9 +79,9 @@ TEST(DenseRefinement, KinectNoisyDepthKeepsTheModelsScale) {
   auto noisy = [&](const mrpt::poses::CPose3D& pose) {
     auto f = render(scene, pose);
     std::normal_distribution<float> n(0, 1);
-    f.depth.forEach<float>([&](float& z, const int*) {
-      if (z > 0) z += static_cast<float>(p.depth_noise * z * z) * n(rng);
-    });
+    // A serial loop: cv::Mat::forEach runs in parallel and would share the generator.
+    for (auto it = f.depth.begin<float>(); it != f.depth.end<float>(); ++it)
+      if (*it > 0) *it += static_cast<float>(p.depth_noise * *it * *it) * n(rng);
     return hrgbd::buildDensePyramid(f, p);
   };
   const auto ref = noisy(ref_pose), cur = noisy(ref_pose + kMotion);
