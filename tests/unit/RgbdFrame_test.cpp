@@ -45,4 +45,10 @@ TEST(Intrinsics, PresetsAndGuessing) {
   EXPECT_EQ(hrgbd::guessTumPreset("/d/rgbd_dataset_freiburg2_desk"), "fr2");
   EXPECT_EQ(hrgbd::guessTumPreset("/data/tum_fr3_teddy_200frames"), "fr3");
   EXPECT_EQ(hrgbd::guessTumPreset("/data/frames"), "");
+  EXPECT_EQ(hrgbd::guessTumPreset("/data/fr1/rpy"), "fr1");  // a parent names it
+  EXPECT_EQ(hrgbd::guessTumPreset("/runs_fr1/rgbd_dataset_freiburg3_teddy"), "fr3");
+  EXPECT_EQ(hrgbd::guessTumPreset("/runs_fr1/rgbd_dataset_freiburg3_teddy/"), "fr3");
+  EXPECT_EQ(hrgbd::guessTumPreset("C:\\runs_fr1\\tum_fr2_pair"), "fr2");
+  EXPECT_EQ(hrgbd::guessTumPreset("/home/jeffr1/desk9"), "");  // "fr" inside a word
+  EXPECT_EQ(hrgbd::guessTumPreset("fr3"), "fr3");
 }

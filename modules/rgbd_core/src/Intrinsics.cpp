@@ -45,9 +45,20 @@ mrpt::img::TCamera intrinsicsPreset(const std::string& name) {
 std::string guessTumPreset(const std::string& path) {
   std::string p = path;
   std::transform(p.begin(), p.end(), p.begin(), ::tolower);
-  static const std::regex re("(freiburg|fr)([123])([^0-9]|$)");
-  std::smatch m;
-  if (std::regex_search(p, m, re)) return "fr" + m[2].str();
+  // "fr" or "freiburg" starting a word ("afr1" is not a camera), the digit ending one
+  static const std::regex re("(^|[^a-z])(freiburg|fr)([123])([^0-9]|$)");
+  // The deepest path component that names a camera: the folder's own name before its parents'
+  // ("runs_fr1/rgbd_dataset_freiburg3_teddy" is fr3).
+  std::size_t end = p.size();
+  while (end > 0) {
+    const std::size_t slash = p.find_last_of("/\\", end - 1);
+    const std::size_t begin = slash == std::string::npos ? 0 : slash + 1;
+    const std::string component = p.substr(begin, end - begin);
+    std::smatch m;
+    if (std::regex_search(component, m, re)) return "fr" + m[3].str();
+    if (slash == std::string::npos) break;
+    end = slash;
+  }
   return "";
 }
 

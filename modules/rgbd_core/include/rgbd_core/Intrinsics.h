@@ -19,7 +19,8 @@ mrpt::img::TCamera pinholeCamera(double fx, double fy, double cx, double cy, uns
                                  unsigned height = 480);
 
 /** Guesses the preset from a TUM path ("freiburg1", "fr1_", "/fr1/" ...): "fr1", "fr2", "fr3",
- * or "" when nothing in the path says which Freiburg camera took it. */
+ * or "" when nothing in the path says which Freiburg camera took it. The deepest path component
+ * that names one wins; "fr" must start a word ("afr1" names none). */
 std::string guessTumPreset(const std::string& path);
 
 }  // namespace hrgbd
