@@ -216,17 +216,21 @@ TEST(Config, AFolderGivenAsTheConfigFileIsNamed) {
   }
 }
 
+namespace {
+// loadIniFile()'s message on a file holding `text`, "" if it loads.
+std::string messageOfFile(const std::string& text) {
+  const auto dir = hrgbd::test::tempDir("config_lines");
+  std::ofstream(dir + "/c.ini") << text;
+  try {
+    hrgbd::loadIniFile(dir + "/c.ini");
+  } catch (const ConfigError& e) {
+    return e.what();
+  }
+  return "";
+}
+}  // namespace
+
 TEST(Config, RepeatedSectionsAndKeysAreRejectedNamingLineAndKey) {
-  const auto dir = hrgbd::test::tempDir("config_repeated");
-  const auto messageOfFile = [&](const std::string& text) {
-    std::ofstream(dir + "/c.ini") << text;
-    try {
-      hrgbd::loadIniFile(dir + "/c.ini");
-    } catch (const ConfigError& e) {
-      return std::string(e.what());
-    }
-    return std::string();
-  };
   auto msg = messageOfFile("[ORB]\nn_features = 500\nfast_threshold = 20\nn_features = 800\n");
   EXPECT_NE(msg.find("line 4"), std::string::npos) << msg;
   EXPECT_NE(msg.find("[ORB] n_features"), std::string::npos) << msg;
@@ -239,4 +243,18 @@ TEST(Config, RepeatedSectionsAndKeysAreRejectedNamingLineAndKey) {
   // The project's own files repeat nothing.
   for (const auto* f : {"/config.ini", "/config/paper.ini"})
     EXPECT_NO_THROW(hrgbd::loadIniFile(std::string(HRGBD_SOURCE_DIR) + f)) << f;
+}
+
+TEST(Config, LinesMrptWouldSkipAreRejectedNamingTheLine) {
+  auto msg = messageOfFile("n_features = 500\n[ORB]\nfast_threshold = 5\n");
+  EXPECT_NE(msg.find("line 1"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("'n_features' comes before any [section]"), std::string::npos) << msg;
+  msg = messageOfFile("[ORB]\nfast_threshold 5\n");
+  EXPECT_NE(msg.find("line 2"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("'fast_threshold 5' is neither"), std::string::npos) << msg;
+  msg = messageOfFile("[ORB\nn_features = 500\n");
+  EXPECT_NE(msg.find("line 1"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("without closing it"), std::string::npos) << msg;
+  // Comments of every kind and blank lines stay allowed.
+  EXPECT_EQ(messageOfFile("; a\n# b\n// c\n\n  \t\n[ORB]\nn_features = 500 // d\n"), "");
 }

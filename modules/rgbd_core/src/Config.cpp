@@ -43,9 +43,11 @@ std::string iniFolder(const std::string& config) {
   return folder.empty() ? "." : folder.string();
 }
 
-void rejectRepeatedEntries(const std::string& text, const std::string& name) {
+void rejectMalformedLines(const std::string& text, const std::string& name) {
   // MRPT merges a repeated section and keeps one of two values of a key without a word; these
-  // are nearly always editing mistakes (a pasted block), so they are refused.
+  // are nearly always editing mistakes (a pasted block), so they are refused. So are the lines
+  // it skips without a word: a key before any section, and a line that is neither a
+  // [section] nor key = value (a missing '=', an unclosed '[').
   std::map<std::string, int> sections;                      // section -> line
   std::map<std::pair<std::string, std::string>, int> keys;  // (section, key) -> line
   std::string section;
@@ -57,7 +59,9 @@ void rejectRepeatedEntries(const std::string& text, const std::string& name) {
     line = line.substr(first, line.find_last_not_of(" \t\r") + 1 - first);
     if (line[0] == ';' || line[0] == '#' || line.rfind("//", 0) == 0 || line[0] == '@') continue;
     const auto where = "config file '" + name + "' line " + std::to_string(line_no) + ": ";
-    if (line[0] == '[' && line.find(']') != std::string::npos) {
+    if (line[0] == '[' && line.find(']') == std::string::npos)
+      throw ConfigError(where + "'" + line + "' opens a section without closing it with ']'");
+    if (line[0] == '[') {
       section = line.substr(1, line.find(']') - 1);
       const auto [it, fresh] = sections.emplace(section, line_no);
       if (!fresh)
@@ -66,9 +70,12 @@ void rejectRepeatedEntries(const std::string& text, const std::string& name) {
       continue;
     }
     const auto eq = line.find('=');
-    if (eq == std::string::npos) continue;
+    if (eq == std::string::npos)
+      throw ConfigError(where + "'" + line + "' is neither a [section] nor key = value");
     auto key = line.substr(0, eq);
     key.erase(key.find_last_not_of(" \t") + 1);
+    if (section.empty())
+      throw ConfigError(where + "'" + key + "' comes before any [section]; put it in one");
     const auto [it, fresh] = keys.emplace(std::make_pair(section, key), line_no);
     if (!fresh)
       throw ConfigError(where + "[" + section + "] " + key + " is given again (first on line " +
@@ -83,7 +90,7 @@ std::unique_ptr<mrpt::config::CConfigFileBase> loadIniFile(const std::string& pa
   } catch (const std::runtime_error& e) {
     throw ConfigError(e.what());
   }
-  rejectRepeatedEntries(text, path);
+  rejectMalformedLines(text, path);
   try {
     return std::make_unique<mrpt::config::CConfigFile>(path);
   } catch (const std::exception& e) {  // MRPT's preprocessor: $env{}, $eval{}, @include, ...

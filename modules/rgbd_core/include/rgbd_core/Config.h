@@ -68,11 +68,13 @@ E parseEnum(const std::string& name, const std::string& section, const std::stri
 }
 
 /** Throws ConfigError naming the file (`name`), line and section or key when INI `text` gives a
- * section twice or a key twice in one section (MRPT would merge or pick one silently). */
-void rejectRepeatedEntries(const std::string& text, const std::string& name);
+ * section twice or a key twice in one section (MRPT would merge or pick one silently), or has a
+ * line MRPT would skip silently: a key before any section, an unclosed '[', a line that is
+ * neither a [section] nor key = value. */
+void rejectMalformedLines(const std::string& text, const std::string& name);
 
 /** Loads an INI file, throwing ConfigError if it is missing, a folder or unreadable, or if it
- * repeats a section or key (rejectRepeatedEntries()). */
+ * repeats a section or key or has a malformed line (rejectMalformedLines()). */
 std::unique_ptr<mrpt::config::CConfigFileBase> loadIniFile(const std::string& path);
 
 /** Every INI section any app of this project reads, so that one file can hold them all:
