@@ -197,6 +197,23 @@ TEST(AppOutputs, WriteFailuresAreErrorsNamingTheFile) {
                 {"cannot write plot '/dev/full'"});
 }
 
+TEST(AppOutputs, OutputsWrittenAfterTheRunAreTriedBeforeIt) {
+  // The map, simplemap and graph are written at the end: a missing folder failed only after the
+  // whole run, with the trajectory and CSV already in place.
+  const fs::path dir = hrgbd::test::tempDir("outputs_tried");
+  const auto run = "-q -n 3 -m rgb_only -i " + kSource + "/rawlogs/desk_near.rawlog -t " +
+                   (dir / "t.txt").string() + " --csv " + (dir / "f.csv").string() + " ";
+  const auto missing = (dir / "missing" / "out").string();
+  for (const std::string option : {"--map-ply", "--map-scene", "--simplemap", "--graph"}) {
+    const auto slam = option == "--graph" ? "--slam " : "";
+    expectFailure("hybrid-rgbd-odometry", run + slam + option + " " + missing,
+                  {"cannot write " + option, "'" + missing + "'", "does not exist"});
+    EXPECT_FALSE(fs::exists(dir / "t.txt")) << option;
+    EXPECT_FALSE(fs::exists(dir / "f.csv")) << option;
+  }
+  for (const auto& e : fs::directory_iterator(dir)) ADD_FAILURE() << "left behind: " << e.path();
+}
+
 TEST(AppOutputs, ARunThatFailsHalfWayLeavesNoOutputThatLooksComplete) {
   const fs::path dir = hrgbd::test::tempDir("outputs_halfway");
   const auto tum = makeTumFolder(dir / "seq");

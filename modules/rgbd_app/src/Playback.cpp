@@ -10,6 +10,7 @@
 #include "rgbd_app/makeOdometry.h"
 #include "rgbd_core/Config.h"
 #include "rgbd_core/JobPaths.h"
+#include "rgbd_core/OutputFile.h"
 #include "rgbd_eval/EvalPlot.h"
 #include "rgbd_eval/Evaluate.h"
 #include "rgbd_io/RawlogWriter.h"
@@ -195,6 +196,11 @@ PlaybackSummary runPlayback(const PlaybackOptions& opt, std::ostream& log) {
   inputs.push_back({opt.config, "the configuration file (--config)"});
   for (const auto& p : slamInputs(job.slam)) inputs.push_back(p);
   checkJobPaths(inputs, job.written);
+  // Every output file is tried now (a temporary file in its folder, removed again): the map,
+  // simplemap and graph are written after the run, which a missing or read-only folder would
+  // otherwise end with nothing but the trajectory and CSV.
+  for (const auto& out : job.written)
+    if (!out.path.empty() && !out.folder) OutputFile(out.path, out.name);
   try {
     if (!opt.plot.empty()) checkPlotPath(opt.plot, "--plot");  // before the run, not after it
   } catch (const std::invalid_argument& e) {
