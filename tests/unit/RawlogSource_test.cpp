@@ -226,3 +226,28 @@ TEST(RawlogSource, ASizeChangeWithinTheRawlogNamesTheEntry) {
       EXPECT_NE(msg.find(part), std::string::npos) << part << ": " << msg;
   }
 }
+
+TEST(RawlogSource, FramesOutOfTimeOrderNameBothEntries) {
+  // They were read as they came: the trajectory went back in time and its evaluation blamed it.
+  for (const double second : {1.0, 0.5}) {  // the same stamp again, an earlier one
+    const auto dir = hrgbd::test::tempDir("rawlog_order");
+    {
+      hrgbd::RawlogWriter w(dir + "/o.rawlog");
+      w.write(*frame(1.0, 5000));
+      w.write(mrpt::obs::CObservationOdometry());  // not a frame: entry 1
+      w.write(*frame(second, 5000));
+      w.close();
+    }
+    hrgbd::RawlogSource src(dir + "/o.rawlog");
+    ASSERT_NE(src.next(), nullptr);
+    try {
+      src.next();
+      FAIL() << "a frame at " << second << " s after one at 1 s was read";
+    } catch (const std::runtime_error& e) {
+      const std::string msg = e.what();
+      for (const auto* part : {"o.rawlog' entry 2", "not after the previous frame's", "entry 0)",
+                               "strictly increasing time order"})
+        EXPECT_NE(msg.find(part), std::string::npos) << part << ": " << msg;
+    }
+  }
+}

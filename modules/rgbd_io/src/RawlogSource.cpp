@@ -108,6 +108,15 @@ mrpt::obs::CObservation3DRangeScan::Ptr RawlogSource::next() {
     throw std::runtime_error("rawlog '" + m_path + "' entry " + std::to_string(m_entry - 1) + ": " +
                              e.what());
   }
+  // As in TUM lists: a trajectory, its evaluation and the motion prediction need time to go on.
+  if (m_stats.frames > 0 && !(obs->timestamp > m_last_time))
+    throw std::runtime_error("rawlog '" + m_path + "' entry " + std::to_string(m_entry - 1) +
+                             ": time stamp " + formatFrameTime(obs->timestamp) +
+                             " is not after the previous frame's (" + formatFrameTime(m_last_time) +
+                             ", entry " + std::to_string(m_last_entry) +
+                             "); the frames of a rawlog must be in strictly increasing time order");
+  m_last_time = obs->timestamp;
+  m_last_entry = m_entry - 1;
   if (obs->hasIntensityImage && obs->intensityImage.isExternallyStored()) {
     mrpt::img::CImage::setImagesPathBase(m_images_dir);
     const auto file = obs->intensityImage.getExternalStorageFileAbsolutePath();
