@@ -118,6 +118,32 @@ TEST(AppBadInput, AnImageDeclaringHugeDimensionsIsRefusedBeforeDecoding) {
                 {"rgb/1.png", "60000x60000"});
 }
 
+TEST(AppBadInput, ATruncatedJpegIsRefusedNamingTheFile) {
+  // OpenCV and MRPT decode it with a libjpeg warning and grey rows: it was registered as "ok".
+  const fs::path dir = hrgbd::test::tempDir("jpeg_truncated");
+  const auto tum = writeTum(dir / "tum", {{640, 480}, {640, 480}});
+  std::vector<unsigned char> jpeg;
+  ASSERT_TRUE(cv::imencode(".jpg", colourImage({640, 480}), jpeg));
+  const auto whole = std::string(jpeg.begin(), jpeg.end());
+  std::ofstream(dir / "tum" / "rgb" / "1.jpg", std::ios::binary) << whole.substr(0, 8000);
+  std::ofstream(dir / "tum" / "rgb.txt") << "1.0 rgb/0.png\n1.1 rgb/1.jpg\n";
+  expectFailure(kOdometry, "-q -i " + tum + " -t " + (dir / "t.txt").string(),
+                {"colour image '" + tum + "/rgb/1.jpg' is a truncated JPEG file"});
+  // The same file whole runs.
+  std::ofstream(dir / "tum" / "rgb" / "1.jpg", std::ios::binary) << whole;
+  EXPECT_EQ(odometry(tum, dir, 2).code, 0);
+  // A rawlog's external image.
+  const auto rawlog = dir / "desk_near.rawlog";
+  for (const auto* name : {"desk_near.rawlog", "desk_near_Images"})
+    fs::copy(std::string(HRGBD_SOURCE_DIR) + "/rawlogs/" + name, dir / name,
+             fs::copy_options::recursive);
+  const auto image = dir / "desk_near_Images" / "RGBD_SIM_000002.jpg";
+  const auto bytes = slurp(image);
+  std::ofstream(image, std::ios::binary | std::ios::trunc) << bytes.substr(0, bytes.size() / 2);
+  expectFailure(kOdometry, "-q -i " + rawlog.string() + " -t " + (dir / "t.txt").string(),
+                {"entry 2: external image", "RGBD_SIM_000002.jpg' is a truncated JPEG file"});
+}
+
 // ---- 2, 3. lists as editors save them, absolute image paths ---------------------------------
 
 TEST(AppBadInput, ByteOrderMarksAndAbsoluteImagePathsAreAccepted) {

@@ -129,6 +129,12 @@ mrpt::obs::CObservation3DRangeScan::Ptr RawlogSource::next() {
     if (!mrpt::system::fileExists(file))
       throw std::runtime_error("rawlog '" + m_path + "' entry " + std::to_string(m_entry - 1) +
                                ": external image '" + file + "' is missing");
+    try {
+      refuseTruncatedJpeg(file, "external");
+    } catch (const std::runtime_error& e) {
+      throw std::runtime_error("rawlog '" + m_path + "' entry " + std::to_string(m_entry - 1) +
+                               ": " + e.what());
+    }
   }
   try {
     obs->load();

@@ -14,6 +14,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "ReadGuards.h"
 #include "rgbd_core/Config.h"
 #include "rgbd_core/Intrinsics.h"
 #include "rgbd_core/RgbdFrame.h"
@@ -49,6 +50,7 @@ void refuseHugePng(const std::string& path) {
 
 cv::Mat readImage(const std::string& path, const char* what, int flags) {
   refuseHugePng(path);
+  refuseTruncatedJpeg(path, what);
   cv::Mat m;
   try {
     m = cv::imread(path, flags);
