@@ -175,6 +175,26 @@ TEST(Simulator, ReplayedMotionLooksAtTheScene) {
   }
 }
 
+TEST(Simulator, AMotionBeyondTheEvaluatorsRangeIsRefusedNamingThePose) {
+  // 1e30 m was replayed as blank frames and written to the ground truth as -2^47 m.
+  hrgbd::Trajectory far;
+  for (int i = 0; i < 10; ++i)
+    far.push_back({i * 0.05, mrpt::poses::CPose3D(0.01 * i, 0, 1, 0, 0, 0)});
+  far[3].pose.x(1e30);
+  const auto file = hrgbd::test::tempDir("sim_far_motion") + "/far.txt";
+  hrgbd::saveTumTrajectory(file, far);
+  SimParams p;
+  p.motion = file;
+  try {
+    cameraPath(makeScene(p.scene, false), p, {0.0, 1 / 30.0, 2 / 30.0});
+    FAIL() << "a motion with a coordinate of 1e30 m was replayed";
+  } catch (const std::runtime_error& e) {
+    const std::string msg = e.what();
+    for (const auto* part : {"far.txt", "time stamp 0.15", "1e+30 m", "up to 1e9 m"})
+      EXPECT_NE(msg.find(part), std::string::npos) << part << ": " << msg;
+  }
+}
+
 TEST(Simulator, TheLoopMotionReturnsToItsStart) {
   // 90 frames at 30 Hz: one frame after the last the camera is back where it started, having
   // orbited +-35 deg on the way; every pose looks at the scene's look_at.
