@@ -22,9 +22,10 @@ void put(Ini& ini, TCLAP::ValueArg<T>& a, bool always) {
   if (always || a.isSet()) ini.write("Simulator", a.getName(), a.getValue());
 }
 
-/** Copies the [Simulator] section of the INI file `path` into `ini`. */
+/** Copies the [Simulator] section of the INI file `path` into `ini`; refuses unknown sections. */
 void copySimulatorSection(const std::string& path, Ini& ini) {
   const auto file = hrgbd::loadIniFile(path);
+  hrgbd::rejectUnknownSections(*file);  // the other sections' keys are their readers' to check
   std::vector<std::string> keys;
   file->getAllKeys("Simulator", keys);
   for (const auto& k : keys) ini.write("Simulator", k, file->read_string("Simulator", k, ""));

@@ -265,6 +265,10 @@ TEST(AppBadInput, IniValuesThatCannotBeServedAndRepeatedKeysNameTheKey) {
   expectFailure(kOdometry, "-c " + ini + " -i x", {ini + "' line 4", "section [ORB]"});
   std::ofstream(ini) << "[Map]\nvoxel_size = 0.02\nvoxel_size = 0.05\n";
   expectFailure(kOdometry, "-c " + ini + " -i x", {ini + "' line 3", "[Map] voxel_size"});
+  // rgbd-simulate reads [Simulator] only, but a section no app knows is refused there too.
+  std::ofstream(ini) << "[Simulator]\nscene = wall\n[Foo]\nbar = 1\n";
+  expectFailure("rgbd-simulate", "-c " + ini + " -n 2 -o " + (dir / "s.rawlog").string(),
+                {"unknown INI section [Foo]"});
   // the SLAM mode's vocabulary: missing, a folder, damaged; relative to the INI file's folder
   const auto rawlog = std::string(HRGBD_SOURCE_DIR) + "/rawlogs/desk_near.rawlog";
   std::ofstream(ini) << "[Slam]\nvocabulary = missing.txt\n";
