@@ -93,6 +93,17 @@ TEST(Evaluate, TooFewAssociatedPosesIsAnError) {
   auto est = line(0.1);
   for (auto& p : est) p.t += 0.05;  // beyond the 0.02 s association limit
   EXPECT_THROW(hrgbd::evaluateTrajectory(line(0.1), est), std::runtime_error);
+  // An empty file says which one is empty ("only 0 poses lie within ..." did not).
+  for (const bool empty_truth : {true, false}) {
+    try {
+      hrgbd::evaluateTrajectory(empty_truth ? hrgbd::Trajectory() : line(0.1),
+                                empty_truth ? line(0.1) : hrgbd::Trajectory());
+      FAIL() << "an empty trajectory was evaluated";
+    } catch (const std::runtime_error& e) {
+      EXPECT_EQ(std::string(e.what()),
+                empty_truth ? "the ground truth has no pose" : "the estimate has no pose");
+    }
+  }
 }
 
 TEST(Evaluate, PublishedEstimatesWithRealTimestampGaps) {

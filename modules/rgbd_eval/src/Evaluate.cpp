@@ -111,6 +111,9 @@ EvalResult evaluateTrajectory(const Trajectory& ground_truth, const Trajectory& 
   std::vector<double> tg, te;
   for (const auto& p : ground_truth) tg.push_back(p.t);
   for (const auto& p : estimate) te.push_back(p.t);
+  for (const auto& [traj, name] :
+       {std::pair{&ground_truth, "ground truth"}, {&estimate, "estimate"}})
+    if (traj->empty()) throw std::runtime_error(std::string("the ") + name + " has no pose");
   const auto pairs = associateByTime(te, tg, params.max_time_difference);
   if (pairs.size() < 3)
     throw std::runtime_error("only " + std::to_string(pairs.size()) +
