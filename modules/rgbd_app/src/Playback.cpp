@@ -196,16 +196,16 @@ PlaybackSummary runPlayback(const PlaybackOptions& opt, std::ostream& log) {
   inputs.push_back({opt.config, "the configuration file (--config)"});
   for (const auto& p : slamInputs(job.slam)) inputs.push_back(p);
   checkJobPaths(inputs, job.written);
-  // Every output file is tried now (a temporary file in its folder, removed again): the map,
-  // simplemap and graph are written after the run, which a missing or read-only folder would
-  // otherwise end with nothing but the trajectory and CSV.
-  for (const auto& out : job.written)
-    if (!out.path.empty() && !out.folder) OutputFile(out.path, out.name);
   try {
     if (!opt.plot.empty()) checkPlotPath(opt.plot, "--plot");  // before the run, not after it
   } catch (const std::invalid_argument& e) {
     throw UsageError(e.what());
   }
+  // Every output file is tried now (a temporary file in its folder, removed again): the map,
+  // simplemap and graph are written after the run, which a missing or read-only folder would
+  // otherwise end with nothing but the trajectory and CSV.
+  for (const auto& out : job.written)
+    if (!out.path.empty() && !out.folder) OutputFile(out.path, out.name);
   log << "input: " << source->describe() << "\nmethod: " << toString(params.method) << "\n";
   if (params.dense.enabled && params.dense.rolling_shutter_ms > 0 && isProductMethod(params.method))
     log << "rolling shutter: " << params.dense.rolling_shutter_ms << " ms readout undone\n";
