@@ -4,6 +4,7 @@
 // in a clear error naming the file, entry or key (or runs, where it is supported).
 #include <zlib.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <opencv2/imgcodecs.hpp>
@@ -174,6 +175,26 @@ TEST(AppBadInput, ARawlogWithoutItsImageFolderSaysSo) {
                  "' references external images in "
                  "folder '" +
                  (dir / "desk_Images").string() + "', which does not exist"});
+}
+
+TEST(AppBadInput, AnUndecodableExternalImageIsAFlaggedFrameWithAOneLineDetail) {
+  // The CSV's detail held MRPT's whole exception text, call stack backtrace included.
+  const fs::path dir = hrgbd::test::tempDir("rawlog_undecodable");
+  for (const auto* name : {"desk_near.rawlog", "desk_near_Images"})
+    fs::copy(std::string(HRGBD_SOURCE_DIR) + "/rawlogs/" + name, dir / name,
+             fs::copy_options::recursive);
+  std::ofstream(dir / "desk_near_Images" / "RGBD_SIM_000002.jpg", std::ios::binary)
+      << std::string(300, '\x5a');
+  const auto r = odometry((dir / "desk_near.rawlog").string(), dir, 4,
+                          "--no-slam --csv " + (dir / "c.csv").string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto csv = slurp(dir / "c.csv");
+  const auto flagged = csv.find(",bad_input,");
+  ASSERT_NE(flagged, std::string::npos) << csv;
+  const auto line = csv.substr(flagged, csv.find('\n', flagged) - flagged);
+  EXPECT_NE(line.find("RGBD_SIM_000002.jpg"), std::string::npos) << line;
+  EXPECT_EQ(csv.find("backtrace"), std::string::npos) << csv;
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 5) << csv;  // header and 4 frames
 }
 
 TEST(AppBadInput, AGzipFileOfGarbageIsNotARawlog) {

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "rgbd_core/Config.h"
+#include "rgbd_core/ErrorText.h"
 
 namespace hrgbd {
 namespace {
@@ -105,7 +106,7 @@ FrameResult RgbdOdometry::track(const mrpt::obs::CObservation3DRangeScan& obs) {
     cur.image = timed(r.ms.prepare, [&] { return prepareRgbdImage(obs); });
   } catch (const std::exception& e) {
     r.path = "none";
-    return predict(std::move(r), FrameResult::Status::BadInput, e.what());
+    return predict(std::move(r), FrameResult::Status::BadInput, errorText(e));  // no backtrace
   }
   report(m_registration->prepare(cur), r);
   if (!m_ref) return accept(std::move(cur), m_pose, std::move(r), true);
