@@ -102,6 +102,12 @@ TEST(AppBadInput, AnySizeRunsWithExplicitIntrinsicsAndFourThreeIsScaled) {
   EXPECT_NE(r.out.find("frames: 2, registered: 1"), std::string::npos) << r.out;
   r = odometry(writeTum(dir / "small", {{320, 240}, {320, 240}}), dir, 2);
   EXPECT_EQ(r.code, 0) << r.err;
+  // A principal point off the image ran, every frame "ok" on a wrong camera.
+  std::ofstream(dir / "off.ini") << "[TumSource]\nintrinsics = explicit\ncx = 5000\n";
+  expectFailure(
+      kOdometry,
+      "-q -i " + hd + " -t " + (dir / "t.txt").string() + " -c " + (dir / "off.ini").string(),
+      {"[TumSource] cx = 5000 lies outside the 1280x720 image", "rgb/0.png"});
 }
 
 TEST(AppBadInput, ASizeChangeInTheSequenceNamesTheFrame) {

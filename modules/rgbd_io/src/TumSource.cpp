@@ -13,11 +13,13 @@
 #include <opencv2/imgcodecs.hpp>
 #include <set>
 #include <stdexcept>
+#include <tuple>
 
 #include "ReadGuards.h"
 #include "rgbd_core/Config.h"
 #include "rgbd_core/Intrinsics.h"
 #include "rgbd_core/RgbdFrame.h"
+#include "rgbd_core/Timestamp.h"
 
 namespace hrgbd {
 namespace {
@@ -187,6 +189,14 @@ mrpt::img::TCamera TumSource::cameraFor(cv::Size size, const std::string& file) 
   if (cam.ncols == 0) {  // explicit: for the images as they are
     cam.ncols = size.width;
     cam.nrows = size.height;
+    // A principal point off the image is a value meant for other images (or a typo): it ran,
+    // every frame "ok" on a wrong camera.
+    for (const auto& [key, value, extent] :
+         {std::tuple{"cx", cam.cx(), size.width}, std::tuple{"cy", cam.cy(), size.height}})
+      if (!(value >= 0 && value <= extent))
+        throw std::runtime_error("[TumSource] " + std::string(key) + " = " + formatSeconds(value) +
+                                 " lies outside the " + sizeText(size) + " image '" + file +
+                                 "'; the principal point is in pixels of the folder's images");
     return cam;
   }
   if (size.width == int(cam.ncols) && size.height == int(cam.nrows)) return cam;
