@@ -255,6 +255,13 @@ TEST(Config, LinesMrptWouldSkipAreRejectedNamingTheLine) {
   msg = messageOfFile("[ORB\nn_features = 500\n");
   EXPECT_NE(msg.find("line 1"), std::string::npos) << msg;
   EXPECT_NE(msg.find("without closing it"), std::string::npos) << msg;
-  // Comments of every kind and blank lines stay allowed.
+  msg = messageOfFile("[ORB]\n = 5\n");
+  EXPECT_NE(msg.find("line 2: '= 5' gives a value without a key"), std::string::npos) << msg;
+  // Comments of every kind, blank lines, MRPT's continued lines and @define'd variables stay
+  // allowed; a line number after a continued line is still the file's.
   EXPECT_EQ(messageOfFile("; a\n# b\n// c\n\n  \t\n[ORB]\nn_features = 500 // d\n"), "");
+  EXPECT_EQ(messageOfFile("[ORB]\nn_features = \\\n  500\nn_levels = 8\n"), "");
+  EXPECT_EQ(messageOfFile("@define KV n_levels = 8\n[ORB]\n${KV}\n"), "");
+  msg = messageOfFile("[ORB]\nn_features = \\\n  500\nfast_threshold 5\n");
+  EXPECT_NE(msg.find("line 4: 'fast_threshold 5'"), std::string::npos) << msg;
 }

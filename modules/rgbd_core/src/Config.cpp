@@ -53,11 +53,18 @@ void rejectMalformedLines(const std::string& text, const std::string& name) {
   std::string section;
   std::istringstream in(text);
   std::string line;
-  for (int line_no = 1; std::getline(in, line); ++line_no) {
+  for (int line_no = 1, next_no = 1; std::getline(in, line); line_no = ++next_no) {
+    // MRPT's preprocessor joins a line ending in '\' with the next one.
+    std::string more;
+    for (auto end = line.find_last_not_of(" \t\r");
+         end != std::string::npos && line[end] == '\\' && std::getline(in, more);
+         end = line.find_last_not_of(" \t\r"), ++next_no)
+      line = line.substr(0, end) + more;
     const auto first = line.find_first_not_of(" \t\r");
     if (first == std::string::npos) continue;
     line = line.substr(first, line.find_last_not_of(" \t\r") + 1 - first);
     if (line[0] == ';' || line[0] == '#' || line.rfind("//", 0) == 0 || line[0] == '@') continue;
+    if (line.find("${") != std::string::npos) continue;  // an @define'd variable: seen expanded
     const auto where = "config file '" + name + "' line " + std::to_string(line_no) + ": ";
     if (line[0] == '[' && line.find(']') == std::string::npos)
       throw ConfigError(where + "'" + line + "' opens a section without closing it with ']'");
@@ -74,6 +81,7 @@ void rejectMalformedLines(const std::string& text, const std::string& name) {
       throw ConfigError(where + "'" + line + "' is neither a [section] nor key = value");
     auto key = line.substr(0, eq);
     key.erase(key.find_last_not_of(" \t") + 1);
+    if (key.empty()) throw ConfigError(where + "'" + line + "' gives a value without a key");
     if (section.empty())
       throw ConfigError(where + "'" + key + "' comes before any [section]; put it in one");
     const auto [it, fresh] = keys.emplace(std::make_pair(section, key), line_no);
