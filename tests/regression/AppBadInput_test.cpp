@@ -136,8 +136,8 @@ TEST(AppBadInput, ATruncatedJpegIsRefusedNamingTheFile) {
   std::ofstream(dir / "tum" / "rgb.txt") << "1.0 rgb/0.png\n1.1 rgb/1.jpg\n";
   expectFailure(kOdometry, "-q -i " + tum + " -t " + (dir / "t.txt").string(),
                 {"colour image '" + tum + "/rgb/1.jpg' is a truncated JPEG file"});
-  // The same file whole runs.
-  std::ofstream(dir / "tum" / "rgb" / "1.jpg", std::ios::binary) << whole;
+  // The same file whole runs, also with bytes after its end (padding, appended data).
+  std::ofstream(dir / "tum" / "rgb" / "1.jpg", std::ios::binary) << whole << std::string(2048, 0);
   EXPECT_EQ(odometry(tum, dir, 2).code, 0);
   // A rawlog's external image.
   const auto rawlog = dir / "desk_near.rawlog";

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "ImageFiles.h"
 #include "ReadGuards.h"
 #include "rgbd_core/ErrorText.h"
 #include "rgbd_core/Timestamp.h"

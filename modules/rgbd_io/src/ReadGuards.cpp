@@ -17,9 +17,7 @@
 
 #include <dlfcn.h>
 
-#include <algorithm>
 #include <cstdio>
-#include <fstream>
 #include <new>
 #include <stdexcept>
 #include <string>
@@ -71,20 +69,4 @@ namespace hrgbd {
 void installReadGuards() {}  // referencing this links the interposers into the program
 ReadingRawlogEntry::ReadingRawlogEntry() { ++t_reading_entry; }
 ReadingRawlogEntry::~ReadingRawlogEntry() { --t_reading_entry; }
-
-void refuseTruncatedJpeg(const std::string& path, const std::string& what) {
-  std::ifstream in(path, std::ios::binary | std::ios::ate);
-  const std::streamoff size = in ? std::streamoff(in.tellg()) : 0;
-  if (size < 2) return;  // the decoder names what is wrong
-  std::string head(2, '\0');
-  in.seekg(0);
-  if (!in.read(&head[0], 2) || head != "\xFF\xD8") return;  // not a JPEG
-  const std::streamoff tail_size = std::min<std::streamoff>(size, 1024);
-  std::string tail(static_cast<std::size_t>(tail_size), '\0');
-  in.seekg(size - tail_size);
-  if (!in.read(&tail[0], tail_size)) return;
-  if (tail.find("\xFF\xD9") == std::string::npos)
-    throw std::runtime_error(what + " image '" + path +
-                             "' is a truncated JPEG file: it has no end-of-image marker");
-}
 }  // namespace hrgbd

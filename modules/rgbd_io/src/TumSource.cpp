@@ -5,9 +5,7 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <mutex>
 #include <opencv2/imgcodecs.hpp>
@@ -15,7 +13,7 @@
 #include <stdexcept>
 #include <tuple>
 
-#include "ReadGuards.h"
+#include "ImageFiles.h"
 #include "rgbd_core/Config.h"
 #include "rgbd_core/Intrinsics.h"
 #include "rgbd_core/RgbdFrame.h"
@@ -24,30 +22,8 @@
 namespace hrgbd {
 namespace {
 
-// The largest frame read [pixels], above any RGB-D sensor's (4096x3072 colour at most): a
-// larger size declared in an image header is a corrupt or hostile file ("decompression bomb"),
-// refused before the decoder allocates it.
-constexpr std::int64_t kMaxPixels = std::int64_t(4096) * 4096;
-
 std::string sizeText(cv::Size s) {
   return std::to_string(s.width) + "x" + std::to_string(s.height);
-}
-
-// Refuses a PNG whose header (IHDR, which the format puts first) declares more pixels than a
-// frame may have. By hand: OpenCV 4.6 has no call that reads an image's size without decoding.
-void refuseHugePng(const std::string& path) {
-  unsigned char h[24] = {};
-  std::ifstream in(path, std::ios::binary);
-  if (!in.read(reinterpret_cast<char*>(h), sizeof h)) return;
-  if (std::memcmp(h, "\x89PNG\r\n\x1a\n", 8) != 0 || std::memcmp(h + 12, "IHDR", 4) != 0) return;
-  auto be32 = [](const unsigned char* b) {
-    return std::int64_t(b[0]) << 24 | std::int64_t(b[1]) << 16 | std::int64_t(b[2]) << 8 | b[3];
-  };
-  const std::int64_t w = be32(h + 16), ht = be32(h + 20);
-  if (w > kMaxPixels || ht > kMaxPixels || w * ht > kMaxPixels)  // in this order: no overflow
-    throw std::runtime_error("image '" + path + "' declares " + std::to_string(w) + "x" +
-                             std::to_string(ht) + " pixels, more than the " +
-                             std::to_string(kMaxPixels) + " accepted for one frame");
 }
 
 cv::Mat readImage(const std::string& path, const char* what, int flags) {
