@@ -211,6 +211,10 @@ TEST(AppOutputs, OutputsWrittenAfterTheRunAreTriedBeforeIt) {
     EXPECT_FALSE(fs::exists(dir / "t.txt")) << option;
     EXPECT_FALSE(fs::exists(dir / "f.csv")) << option;
   }
+  // A usage error is said before any output is tried.
+  const auto r = runApp("hybrid-rgbd-odometry", run + "--no-slam --graph " + missing);
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_NE(r.err.find("needs the SLAM mode"), std::string::npos) << r.err;
   for (const auto& e : fs::directory_iterator(dir)) ADD_FAILURE() << "left behind: " << e.path();
 }
 

@@ -196,16 +196,19 @@ PlaybackSummary runPlayback(const PlaybackOptions& opt, std::ostream& log) {
   inputs.push_back({opt.config, "the configuration file (--config)"});
   for (const auto& p : slamInputs(job.slam)) inputs.push_back(p);
   checkJobPaths(inputs, job.written);
+  // Usage errors first, then every other output file is tried (a temporary file in its folder,
+  // removed again): the map, simplemap and graph are written after the run, which a missing or
+  // read-only folder would otherwise end with nothing but the trajectory and CSV.
   try {
-    if (!opt.plot.empty()) checkPlotPath(opt.plot, "--plot");  // before the run, not after it
+    if (!opt.plot.empty()) checkPlotPath(opt.plot, "--plot");  // tries it too
   } catch (const std::invalid_argument& e) {
     throw UsageError(e.what());
   }
-  // Every output file is tried now (a temporary file in its folder, removed again): the map,
-  // simplemap and graph are written after the run, which a missing or read-only folder would
-  // otherwise end with nothing but the trajectory and CSV.
+  if (!job.graph.empty() && !job.slam.enabled)
+    throw UsageError(
+        "a pose graph (--graph / [Playback] graph) needs the SLAM mode ([Slam] enabled)");
   for (const auto& out : job.written)
-    if (!out.path.empty() && !out.folder) OutputFile(out.path, out.name);
+    if (!out.path.empty() && !out.folder && out.path != opt.plot) OutputFile(out.path, out.name);
   log << "input: " << source->describe() << "\nmethod: " << toString(params.method) << "\n";
   if (params.dense.enabled && params.dense.rolling_shutter_ms > 0 && isProductMethod(params.method))
     log << "rolling shutter: " << params.dense.rolling_shutter_ms << " ms readout undone\n";
@@ -216,9 +219,6 @@ PlaybackSummary runPlayback(const PlaybackOptions& opt, std::ostream& log) {
   const auto sinks = makeSinks(job, *source, opt.progress ? &progress : nullptr);
   FrameLoop loop(*source, std::move(odometry), sinks.list(), max_frames);
   if (job.slam.enabled) loop.setSlam(std::make_unique<KeyframeSlam>(job.slam, params));
-  if (!job.graph.empty() && !job.slam.enabled)
-    throw UsageError(
-        "a pose graph (--graph / [Playback] graph) needs the SLAM mode ([Slam] enabled)");
   loop.run();
   loop.finish(log);
   if (!job.graph.empty()) {
