@@ -251,3 +251,31 @@ TEST(RawlogSource, FramesOutOfTimeOrderNameBothEntries) {
     }
   }
 }
+
+TEST(RawlogSource, FramesOfASecondCameraAreRefusedNamingBoth) {
+  // Two cameras' frames (in one SensoryFrame, one time stamp) were read as one sequence, and
+  // refused as out of time order.
+  const auto dir = hrgbd::test::tempDir("rawlog_two_cameras");
+  {
+    hrgbd::RawlogWriter w(dir + "/two.rawlog");
+    mrpt::obs::CSensoryFrame sf;
+    for (const auto* label : {"LEFT", "RIGHT"}) {
+      auto f = frame(1.0, 5000);
+      f->sensorLabel = label;
+      sf.insert(f);
+    }
+    w.write(sf);
+    w.close();
+  }
+  hrgbd::RawlogSource src(dir + "/two.rawlog");
+  ASSERT_NE(src.next(), nullptr);
+  try {
+    src.next();
+    FAIL() << "a second camera's frame was read";
+  } catch (const std::runtime_error& e) {
+    const std::string msg = e.what();
+    for (const auto* part : {"two.rawlog' entry 0", "camera 'RIGHT' after frames of camera 'LEFT'",
+                             "rawlog-edit --keep-label LEFT"})
+      EXPECT_NE(msg.find(part), std::string::npos) << part << ": " << msg;
+  }
+}

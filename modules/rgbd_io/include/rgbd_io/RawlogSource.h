@@ -45,6 +45,7 @@ class RawlogSource : public FrameSource {
   Trajectory m_ground_truth;
   cv::Size m_first_size;  //!< size of the first frame
   std::size_t m_first_entry = 0;
+  std::string m_camera;                 //!< the first frame's sensorLabel
   mrpt::Clock::time_point m_last_time;  //!< the previous frame's time stamp ...
   std::size_t m_last_entry = 0;         //!< ... and its entry
 
