@@ -73,11 +73,11 @@ void requireUniqueTimes(const Trajectory& estimate) {
                              formatSeconds(*twice) + "; it must have one pose per time");
 }
 
-/** Throws unless every associated position is within kMaxEvalCoordinate of the origin. */
+/** Throws unless every associated position is within kMaxTrajectoryCoordinate of the origin. */
 void requireEvaluablePositions(const Trajectory& traj, const std::string& name) {
   for (const auto& p : traj)
     for (int k = 0; k < 3; ++k)
-      if (!(std::abs(p.pose[k]) <= kMaxEvalCoordinate))
+      if (!(std::abs(p.pose[k]) <= kMaxTrajectoryCoordinate))
         throw std::runtime_error(
             "the " + name + "'s pose at time stamp " + formatSeconds(p.t) +
             " has a coordinate of " + formatSeconds(p.pose[k]) +

@@ -86,7 +86,7 @@ Trajectory loadMotion(const std::string& file, const std::vector<double>& times)
   for (const auto& q : real) {
     if (q.t - real[0].t > last + 0.1) continue;
     for (int k = 0; k < 3; ++k)  // the evaluator's limit: the ground truth written stays exact
-      if (!(std::abs(q.pose[k]) <= 1e9))
+      if (!(std::abs(q.pose[k]) <= kMaxTrajectoryCoordinate))
         throw std::runtime_error("motion file '" + file + "': the pose at time stamp " +
                                  formatSeconds(q.t) + " has a coordinate of " +
                                  formatSeconds(q.pose[k]) + " m; motions are read up to 1e9 m");

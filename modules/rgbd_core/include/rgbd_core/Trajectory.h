@@ -18,6 +18,11 @@
 
 namespace hrgbd {
 
+/** [m] Positions are evaluated (and replayed by the simulator) up to this far from the origin
+ * (UTM coordinates fit): beyond it a double's step exceeds 0.1 um and the squares of the
+ * alignment lose the figures. */
+inline constexpr double kMaxTrajectoryCoordinate = 1e9;
+
 /** One pose with its time stamp [s, UNIX time as in TUM files]. */
 struct TimedPose {
   double t = 0;

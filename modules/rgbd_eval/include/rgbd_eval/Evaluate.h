@@ -38,16 +38,12 @@ struct EvalResult {
   std::vector<double> rpe_rot_error;    //!< [deg/s]
 };
 
-/** [m] Positions are evaluated up to this far from the origin (UTM coordinates fit): beyond it
- * a double's step exceeds 0.1 um and the squares of the alignment lose the figures. */
-inline constexpr double kMaxEvalCoordinate = 1e9;
-
 /** Associates `estimate` with `ground_truth` by time stamp and computes the figures, all finite.
  * Throws std::invalid_argument for parameters that are not > 0, and std::runtime_error saying
  * why if fewer than 3 poses associate (the alignment needs 3), if the estimate has two poses at
  * one time stamp (the ground truth may: TUM's fr2/desk file does), if an associated position is
- * beyond kMaxEvalCoordinate, or if a figure would not be finite. When no RPE interval is free of
- * gaps, rpe_pairs is 0 and the RPE figures are not given (toText(), toJson()). */
+ * beyond kMaxTrajectoryCoordinate, or if a figure would not be finite. When no RPE interval is free
+ * of gaps, rpe_pairs is 0 and the RPE figures are not given (toText(), toJson()). */
 EvalResult evaluateTrajectory(const Trajectory& ground_truth, const Trajectory& estimate,
                               const EvalParams& params = {});
 
