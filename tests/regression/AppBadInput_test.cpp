@@ -266,7 +266,7 @@ TEST(AppBadInput, IntrinsicsGuessedFromNothingAreAWarningAndByNameAreSaid) {
   r = odometry(real.string(), dir, 2);
   EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_EQ(r.err.find("warning:"), std::string::npos) << r.err;
-  EXPECT_NE(r.out.find("intrinsics fr1 (chosen by the folder name"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("intrinsics fr1 (chosen by the folder's path"), std::string::npos) << r.out;
 }
 
 // ---- 9, 10. configuration files and options --------------------------------------------------

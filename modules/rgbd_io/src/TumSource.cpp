@@ -88,10 +88,11 @@ TumSource::TumSource(const std::string& folder, const TumSourceParams& params)
 
   m_camera_name = params.intrinsics;
   if (m_camera_name == "auto") {
-    m_camera_name = guessTumPreset(mrpt::system::toAbsolutePath(folder));
+    // normalised: "..", run from inside a folder named for a camera, names its parent
+    m_camera_name = guessTumPreset(std::filesystem::absolute(folder).lexically_normal().string());
     if (m_camera_name.empty()) {
       m_camera_name = "ros_default";
-      m_camera_origin = " (guessed: the folder name names no Freiburg camera)";
+      m_camera_origin = " (guessed: the folder's path names no Freiburg camera)";
       // Said when the first frame is read: a run refused for its options prints its error alone.
       m_intrinsics_warning =
           "warning: TUM folder '" + folder +
@@ -100,7 +101,7 @@ TumSource::TumSource(const std::string& folder, const TumSourceParams& params)
           "this camera's, set [TumSource] intrinsics = fr1|fr2|fr3|ros_default, or explicit with "
           "fx, fy, cx, cy, in an INI file given with --config";
     } else {
-      m_camera_origin = " (chosen by the folder name; [TumSource] intrinsics sets them)";
+      m_camera_origin = " (chosen by the folder's path; [TumSource] intrinsics sets them)";
     }
   }
   // Explicit intrinsics are in pixels of the folder's own images: their size is the first
