@@ -19,6 +19,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "rgbd_core/Median.h"
 #include "rgbd_core/OutputFile.h"
 
 namespace hrgbd {
@@ -154,8 +155,7 @@ double gapOf(const std::vector<double>& t) {
   std::vector<double> dt;
   for (std::size_t i = 1; i < t.size(); ++i) dt.push_back(t[i] - t[i - 1]);
   if (dt.empty()) return 0;
-  std::nth_element(dt.begin(), dt.begin() + dt.size() / 2, dt.end());
-  return std::max(0.5, 10 * dt[dt.size() / 2]);
+  return std::max(0.5, 10 * median(dt));
 }
 
 /** The axes of `plane`; Auto: the two along which the ground truth spreads most, in order. */

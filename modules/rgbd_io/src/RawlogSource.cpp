@@ -103,22 +103,25 @@ mrpt::obs::CObservation3DRangeScan::Ptr RawlogSource::next() {
   auto obs = m_pending.front();
   m_pending.pop_front();
   normaliseFlags(*obs);
-  const auto where = "rawlog '" + m_path + "' entry " + std::to_string(m_entry - 1) + ": ";
+  // the messages' start, made only for one
+  auto where = [&] {
+    return "rawlog '" + m_path + "' entry " + std::to_string(m_entry - 1) + ": ";
+  };
   try {
     checkFrameTime(obs->timestamp);
   } catch (const std::invalid_argument& e) {
-    throw std::runtime_error(where + e.what());
+    throw std::runtime_error(where() + e.what());
   }
   if (m_stats.frames == 0) m_camera = obs->sensorLabel;
   if (obs->sensorLabel != m_camera)  // two cameras' frames would be registered as one sequence
-    throw std::runtime_error(where + "a frame of camera '" + obs->sensorLabel +
+    throw std::runtime_error(where() + "a frame of camera '" + obs->sensorLabel +
                              "' after frames of camera '" + m_camera +
                              "'; the odometry follows one camera: keep its frames with "
                              "rawlog-edit --keep-label " +
                              m_camera);
   // As in TUM lists: a trajectory, its evaluation and the motion prediction need time to go on.
   if (m_stats.frames > 0 && !(obs->timestamp > m_last_time))
-    throw std::runtime_error(where + "time stamp " + formatFrameTime(obs->timestamp) +
+    throw std::runtime_error(where() + "time stamp " + formatFrameTime(obs->timestamp) +
                              " is not after the previous frame's (" + formatFrameTime(m_last_time) +
                              ", entry " + std::to_string(m_last_entry) +
                              "); the frames of a rawlog must be in strictly increasing time order");
@@ -134,17 +137,17 @@ mrpt::obs::CObservation3DRangeScan::Ptr RawlogSource::next() {
                                std::to_string(m_entry - 1) + ", image '" +
                                obs->intensityImage.getExternalStorageFile() + "')");
     if (!mrpt::system::fileExists(file))
-      throw std::runtime_error(where + "external image '" + file + "' is missing");
+      throw std::runtime_error(where() + "external image '" + file + "' is missing");
     try {
       refuseTruncatedJpeg(file, "external");
     } catch (const std::runtime_error& e) {
-      throw std::runtime_error(where + e.what());
+      throw std::runtime_error(where() + e.what());
     }
   }
   try {
     obs->load();
   } catch (const std::exception& e) {
-    throw std::runtime_error(where + "cannot load external data: " + errorText(e));
+    throw std::runtime_error(where() + "cannot load external data: " + errorText(e));
   }
   checkSize(*obs);
   ++m_stats.frames;

@@ -8,6 +8,8 @@
 #include <cmath>
 #include <optional>
 
+#include "rgbd_core/Median.h"
+
 namespace hrgbd {
 namespace {
 
@@ -82,12 +84,6 @@ std::vector<CurrentPoint> currentPoints(const DenseLevel& c, int stride,
     }
   }
   return pts;
-}
-
-// The median of `a` (not empty; reordered).
-double median(std::vector<float>& a) {
-  std::nth_element(a.begin(), a.begin() + a.size() / 2, a.end());
-  return a[a.size() / 2];
 }
 
 // The noise sigmas that normalise the residuals at one level.

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "rgbd_core/Median.h"
+
 namespace hrgbd {
 
 PlaneIcpResult refinePointToPlane(const Points& source, const Points& target, const Points& normals,
@@ -31,8 +33,7 @@ PlaneIcpResult refinePointToPlane(const Points& source, const Points& target, co
     // Robust scale from the median absolute residual (1.4826 MAD), at least 1 mm.
     std::vector<double> a(e.size());
     std::transform(e.begin(), e.end(), a.begin(), [](double x) { return std::abs(x); });
-    std::nth_element(a.begin(), a.begin() + a.size() / 2, a.end());
-    const double huber = 1.345 * std::max(1.4826 * a[a.size() / 2], 1e-3);
+    const double huber = 1.345 * std::max(1.4826 * median(a), 1e-3);
     // Normal equations of the linearised residual e + [p x n; n] . [w; t].
     Eigen::Matrix<double, 6, 6> H = Eigen::Matrix<double, 6, 6>::Zero();
     Eigen::Matrix<double, 6, 1> g = Eigen::Matrix<double, 6, 1>::Zero();

@@ -13,6 +13,7 @@
 
 #include "rgbd_core/Config.h"
 #include "rgbd_core/Intrinsics.h"
+#include "rgbd_core/Median.h"
 #include "rgbd_core/OutputFile.h"
 #include "rgbd_core/RgbdFrame.h"
 #include "rgbd_core/Timestamp.h"
@@ -296,11 +297,6 @@ class SequenceWriter {
   std::unique_ptr<OniWriter> m_oni;
   int m_oni_frames = 0;
 };
-
-double median(std::vector<double> v) {
-  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-  return v[v.size() / 2];
-}
 
 }  // namespace
 
