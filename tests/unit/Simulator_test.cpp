@@ -10,6 +10,7 @@
 
 #include "TestData.h"
 #include "rgbd_core/Config.h"
+#include "rgbd_io/TumSource.h"
 
 using namespace hrgbd::sim;
 
@@ -101,6 +102,24 @@ TEST(Simulator, SameSeedSameFrames) {
       sb{std::istreambuf_iterator<char>(fb), {}};
   EXPECT_EQ(sa, sb);
   EXPECT_EQ(a.ground_truth.size(), 2u);
+}
+
+TEST(Simulator, ATumFolderSaysItsCameraWhateverItsName) {
+  SimParams p;
+  p.frames = 2;
+  // a name that would make TumSource guess the fr1 Kinect (its intrinsics and rolling shutter)
+  const auto dir = hrgbd::test::tempDir("sim_fr1_desk") + "/tum";
+  simulate(p, {"", dir, hrgbd::ImageStorage::Inline, ""});
+  hrgbd::TumSource src(dir);
+  const auto obs = src.next();
+  ASSERT_TRUE(obs);
+  const hrgbd::PinholeCamera sim;
+  EXPECT_EQ(obs->cameraParamsIntensity.fx(), sim.fx);
+  EXPECT_EQ(obs->cameraParamsIntensity.fy(), sim.fy);
+  EXPECT_EQ(obs->cameraParamsIntensity.cx(), sim.cx);
+  EXPECT_EQ(obs->cameraParamsIntensity.cy(), sim.cy);
+  EXPECT_EQ(src.rollingShutterMs(), 0);
+  EXPECT_NE(src.describe().find("calibration.txt"), std::string::npos) << src.describe();
 }
 
 TEST(Simulator, SensorModelKeysAreReadAndChecked) {

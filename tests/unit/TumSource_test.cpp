@@ -1,5 +1,6 @@
 #include "rgbd_io/TumSource.h"
 
+#include <filesystem>
 #include <fstream>
 #include <opencv2/imgcodecs.hpp>
 
@@ -83,4 +84,79 @@ TEST(TumSource, TheFr1AndFr2CamerasHaveTheirRollingShutter) {
   p.intrinsics = "fr1";
   p.rolling_shutter_ms = 12;
   EXPECT_EQ(hrgbd::TumSource(dir, p).rollingShutterMs(), 12);
+}
+
+namespace {
+/** A folder of one 64x48 frame (flat grey, depth 1 m) with `calibration` as its calibration.txt. */
+std::string folderWithCalibration(const std::string& name, const std::string& calibration) {
+  const auto dir = hrgbd::test::tempDir(name);
+  std::filesystem::create_directories(dir + "/rgb");
+  std::filesystem::create_directories(dir + "/depth");
+  cv::imwrite(dir + "/rgb/1.png", cv::Mat(48, 64, CV_8UC3, cv::Scalar(90, 100, 110)));
+  cv::imwrite(dir + "/depth/1.png", cv::Mat(48, 64, CV_16UC1, cv::Scalar(5000)));
+  std::ofstream(dir + "/rgb.txt") << "1.0 rgb/1.png\n";
+  std::ofstream(dir + "/depth.txt") << "1.0 depth/1.png\n";
+  std::ofstream(dir + "/calibration.txt") << calibration;
+  return dir;
+}
+}  // namespace
+
+TEST(TumSource, TheFoldersCalibrationTxtGivesTheCameraUnlessTheIniSetsOne) {
+  // in a folder whose name would pick fr1: the file wins over the name
+  const auto dir = folderWithCalibration("tum_fr1_calibrated", "# fx fy cx cy\n50 51 31.5 23.25\n");
+  hrgbd::TumSource src(dir);
+  EXPECT_NE(src.describe().find("intrinsics calibration.txt (the folder's own: fx 50, fy 51, "
+                                "cx 31.5, cy 23.25"),
+            std::string::npos)
+      << src.describe();
+  EXPECT_EQ(src.rollingShutterMs(), 0);  // not a Freiburg Kinect
+  bool listed = false;
+  for (const auto& in : src.inputs()) listed |= in.path == dir + "/calibration.txt";
+  EXPECT_TRUE(listed) << "an output could overwrite calibration.txt";
+  const auto obs = src.next();
+  ASSERT_TRUE(obs);
+  const auto& cam = obs->cameraParamsIntensity;
+  EXPECT_EQ(cam.fx(), 50);
+  EXPECT_EQ(cam.fy(), 51);
+  EXPECT_EQ(cam.cx(), 31.5);
+  EXPECT_EQ(cam.cy(), 23.25);
+  EXPECT_EQ(cam.ncols, 64u);
+  EXPECT_EQ(cam.nrows, 48u);
+
+  hrgbd::TumSourceParams p;
+  p.intrinsics = "fr3";
+  EXPECT_DOUBLE_EQ(hrgbd::TumSource(dir, p).camera().fx(), 535.4);
+}
+
+TEST(TumSource, AMalformedCalibrationTxtIsRefusedNamingItsLine) {
+  const std::pair<const char*, const char*> cases[] = {
+      {"50 51 31.5\n", "line 1: expected 'fx fy cx cy'"},
+      {"50 51 31.5 23.5 0 0 0\n", "line 1: expected 'fx fy cx cy'"},
+      {"fx fy cx cy\n", "line 1: expected 'fx fy cx cy'"},
+      {"# camera\n\n-50 51 31.5 23.5\n", "line 3: the focal lengths fx, fy must be positive"},
+      {"50 51 31.5 23.5\n50 51 31.5 23.5\n", "line 2: a second line of values (line 1"},
+      {"# nothing\n", "holds no 'fx fy cx cy' line"},
+      {"50 51 1e999 23.5\n", "line 1: expected"},
+  };
+  for (const auto& [text, expected] : cases) {
+    const auto dir = folderWithCalibration("tum_bad_calibration", text);
+    try {
+      hrgbd::TumSource src(dir);
+      FAIL() << "accepted: " << text;
+    } catch (const std::runtime_error& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find("calibration.txt' "), std::string::npos) << what;
+      EXPECT_NE(what.find(expected), std::string::npos) << text << " -> " << what;
+    }
+  }
+  // values for another image size: the principal point off these 64x48 images
+  hrgbd::TumSource src(folderWithCalibration("tum_bad_calibration", "525 525 319.5 239.5\n"));
+  try {
+    src.next();
+    FAIL() << "a principal point off the image was accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("calibration.txt': cx = 319.5 lies outside the 64x48"),
+              std::string::npos)
+        << e.what();
+  }
 }

@@ -40,6 +40,33 @@ std::vector<TumListEntry> parseTumListText(const std::string& text, const std::s
   return out;
 }
 
+TumCalibration parseTumCalibrationText(const std::string& text, const std::string& name) {
+  std::istringstream in(std::string(withoutBom(text)));
+  std::string line;
+  int found_at = 0;
+  TumCalibration c;
+  for (int line_no = 1; std::getline(in, line); ++line_no) {
+    const auto first = line.find_first_not_of(" \t\r");
+    if (first == std::string::npos || line[first] == '#') continue;
+    const auto where = "'" + name + "' line " + std::to_string(line_no);
+    if (found_at > 0)
+      throw std::runtime_error(where + ": a second line of values (line " +
+                               std::to_string(found_at) +
+                               " gave them); expected one 'fx fy cx cy'");
+    std::istringstream ss(line);
+    std::string extra;
+    if (!(ss >> c.fx >> c.fy >> c.cx >> c.cy) || ss >> extra)
+      throw std::runtime_error(where + ": expected 'fx fy cx cy', four numbers in pixels");
+    for (const double v : {c.fx, c.fy, c.cx, c.cy})
+      if (!std::isfinite(v)) throw std::runtime_error(where + ": a value is not finite");
+    if (!(c.fx > 0 && c.fy > 0))
+      throw std::runtime_error(where + ": the focal lengths fx, fy must be positive");
+    found_at = line_no;
+  }
+  if (found_at == 0) throw std::runtime_error("'" + name + "' holds no 'fx fy cx cy' line");
+  return c;
+}
+
 std::vector<TumListEntry> parseTumList(const std::string& path) {
   return parseTumListText(readTextFile(path, "TUM list"), path);
 }

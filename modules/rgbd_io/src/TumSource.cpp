@@ -17,6 +17,7 @@
 #include "rgbd_core/Config.h"
 #include "rgbd_core/Intrinsics.h"
 #include "rgbd_core/RgbdFrame.h"
+#include "rgbd_core/TextFile.h"
 #include "rgbd_core/Timestamp.h"
 
 namespace hrgbd {
@@ -87,7 +88,20 @@ TumSource::TumSource(const std::string& folder, const TumSourceParams& params)
                              std::to_string(params.max_time_difference) + " s");
 
   m_camera_name = params.intrinsics;
-  if (m_camera_name == "auto") {
+  const auto calibration = folder + "/calibration.txt";
+  if (m_camera_name == "auto" && mrpt::system::fileExists(calibration)) {
+    // The folder says its camera (ETH3D's RGB-D folders, rgbd-simulate --tum): no guess.
+    const auto c =
+        parseTumCalibrationText(readTextFile(calibration, "TUM calibration"), calibration);
+    m_camera = pinholeCamera(c.fx, c.fy, c.cx, c.cy, 0, 0);
+    m_camera_name = "calibration.txt";
+    m_calibration_file = calibration;
+    m_camera_origin = " (the folder's own: fx " + formatSeconds(c.fx) + ", fy " +
+                      formatSeconds(c.fy) + ", cx " + formatSeconds(c.cx) + ", cy " +
+                      formatSeconds(c.cy) +
+                      "; [TumSource] intrinsics other than auto overrides it)";
+    m_inputs.push_back({calibration, "the TUM folder's calibration.txt"});
+  } else if (m_camera_name == "auto") {
     // normalised: "..", run from inside a folder named for a camera, names its parent
     m_camera_name = guessTumPreset(std::filesystem::absolute(folder).lexically_normal().string());
     if (m_camera_name.empty()) {
@@ -106,9 +120,10 @@ TumSource::TumSource(const std::string& folder, const TumSourceParams& params)
   }
   // Explicit intrinsics are in pixels of the folder's own images: their size is the first
   // frame's (0 x 0 until it is read).
-  m_camera = m_camera_name == "explicit"
-                 ? pinholeCamera(params.fx, params.fy, params.cx, params.cy, 0, 0)
-                 : intrinsicsPreset(m_camera_name);
+  if (m_camera_name == "explicit")
+    m_camera = pinholeCamera(params.fx, params.fy, params.cx, params.cy, 0, 0);
+  else if (m_calibration_file.empty())
+    m_camera = intrinsicsPreset(m_camera_name);
 
   const auto gt = folder + "/groundtruth.txt";
   if (mrpt::system::fileExists(gt)) m_ground_truth = loadTumTrajectory(gt);
@@ -171,9 +186,11 @@ mrpt::img::TCamera TumSource::cameraFor(cv::Size size, const std::string& file) 
     for (const auto& [key, value, extent] :
          {std::tuple{"cx", cam.cx(), size.width}, std::tuple{"cy", cam.cy(), size.height}})
       if (!(value >= 0 && value <= extent))
-        throw std::runtime_error("[TumSource] " + std::string(key) + " = " + formatSeconds(value) +
-                                 " lies outside the " + sizeText(size) + " image '" + file +
-                                 "'; the principal point is in pixels of the folder's images");
+        throw std::runtime_error(
+            (m_calibration_file.empty() ? "[TumSource] " : "'" + m_calibration_file + "': ") +
+            std::string(key) + " = " + formatSeconds(value) + " lies outside the " +
+            sizeText(size) + " image '" + file +
+            "'; the principal point is in pixels of the folder's images");
     return cam;
   }
   if (size.width == int(cam.ncols) && size.height == int(cam.nrows)) return cam;

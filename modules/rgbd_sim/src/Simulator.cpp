@@ -263,6 +263,14 @@ class SequenceWriter {
       m_rgb_txt->commit();
       m_depth_txt->commit();
       saveTumTrajectory(m_outputs.tum_folder + "/groundtruth.txt", ground_truth);
+      // The camera, so that the folder is not read with one guessed from its name
+      // (TumSource: ETH3D's "fx fy cx cy").
+      std::ostringstream calibration;
+      calibration << std::setprecision(17) << m_camera.fx() << ' ' << m_camera.fy() << ' '
+                  << m_camera.cx() << ' ' << m_camera.cy() << '\n';
+      const auto text = calibration.str();
+      writeOutputFile(m_outputs.tum_folder + "/calibration.txt", "TUM calibration", text.data(),
+                      text.size());
     }
   }
 
@@ -313,7 +321,7 @@ std::vector<JobPath> writtenFiles(const SimOutputs& outputs) {
     out.push_back({groundTruthPathFor(outputs.oni), "--oni's ground truth", false, true});
   }
   if (!outputs.tum_folder.empty()) {
-    for (const auto* name : {"rgb.txt", "depth.txt", "groundtruth.txt"})
+    for (const auto* name : {"rgb.txt", "depth.txt", "groundtruth.txt", "calibration.txt"})
       out.push_back({outputs.tum_folder + "/" + name, std::string("--tum's ") + name, false, true});
     for (const auto* name : {"rgb", "depth"})
       out.push_back(

@@ -25,6 +25,17 @@ std::vector<TumListEntry> parseTumList(const std::string& path);
 /** Same, from text already in memory; `name` is used in messages. */
 std::vector<TumListEntry> parseTumListText(const std::string& text, const std::string& name);
 
+/** The pinhole intrinsics of a folder's `calibration.txt` (the ETH3D SLAM benchmark's RGB-D
+ * folders: "fx fy cx cy" in pixels on one line). */
+struct TumCalibration {
+  double fx = 0, fy = 0, cx = 0, cy = 0;  //!< [px]
+};
+
+/** Parses a calibration.txt: one line of four numbers, fx and fy positive, every one finite;
+ * comments ('#') and blank lines skipped. Throws std::runtime_error naming the file and line for
+ * anything else (fewer or more numbers, a second line of numbers, text). */
+TumCalibration parseTumCalibrationText(const std::string& text, const std::string& name);
+
 /** A colour/depth pair matched by time. */
 struct TumPair {
   TumListEntry rgb, depth;

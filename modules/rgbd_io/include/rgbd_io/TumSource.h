@@ -17,7 +17,9 @@ namespace hrgbd {
 struct TumSourceParams : public Params<TumSourceParams> {
   double max_time_difference = 0.02;  //!< [s] colour/depth pairs further apart are not associated
   double depth_factor = 5000.0;       //!< [units per metre] depth PNG value / factor = metres
-  /** auto (from the folder name, else ros_default with a warning on stderr), fr1, fr2, fr3,
+  /** auto (the folder's calibration.txt, "fx fy cx cy" as in ETH3D's RGB-D folders and as
+   * rgbd-simulate --tum writes it; without one, guessed from the folder's path, else ros_default
+   * with a warning on stderr), fr1, fr2, fr3,
    * ros_default (presets for 640x480, scaled to other sizes of that aspect ratio), or explicit
    * (fx, fy, cx, cy below, in pixels of the folder's images, any size). */
   std::string intrinsics = "auto";
@@ -74,6 +76,7 @@ class TumSource : public FrameSource {
   mrpt::img::TCamera m_camera;
   std::string m_camera_name;
   std::string m_camera_origin;       //!< how "auto" chose the intrinsics, for describe()
+  std::string m_calibration_file;    //!< the folder's calibration.txt, when "auto" read it
   std::string m_intrinsics_warning;  //!< printed once, when the first frame is read
   cv::Size m_first_size;             //!< size of the first frame read
   std::string m_first_file;          //!< its colour image

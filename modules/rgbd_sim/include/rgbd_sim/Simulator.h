@@ -60,8 +60,10 @@ Eigen::Vector3d lookedAtPoint(const Trajectory& path, double distance);
 mrpt::poses::CPose3D lookAt(const Eigen::Vector3d& eye, const Eigen::Vector3d& target);
 
 struct SimOutputs {
-  std::string rawlog;      //!< "" = none; ground truth goes to <stem>_groundtruth.txt
-  std::string tum_folder;  //!< "" = none; rgb/, depth/, rgb.txt, depth.txt, groundtruth.txt
+  std::string rawlog;  //!< "" = none; ground truth goes to <stem>_groundtruth.txt
+  /** "" = none; rgb/, depth/, rgb.txt, depth.txt, groundtruth.txt and calibration.txt (the
+   * camera, "fx fy cx cy", read by TumSource) */
+  std::string tum_folder;
   ImageStorage images = ImageStorage::Inline;  //!< colour storage in the rawlog
   /** "" = none; an OpenNI recording (.oni, OniWriter.h: depth in mm, colour RGB888, uncompressed)
    * whose clock starts at 0 with the first frame; ground truth in that clock goes to
