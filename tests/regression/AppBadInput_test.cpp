@@ -261,7 +261,8 @@ TEST(AppBadInput, IntrinsicsGuessedFromNothingAreAWarningAndByNameAreSaid) {
   const auto warning = r.err.find("warning: TUM folder '" + copy.string() + "'");
   EXPECT_NE(warning, std::string::npos) << r.err;
   EXPECT_EQ(r.err.find("warning:", warning + 1), std::string::npos) << "said once: " << r.err;
-  for (const auto* part : {"ros_default", "[TumSource] intrinsics", "fx = fy = 525"})
+  for (const auto* part : {"ros_default", "[TumSource] intrinsics", "fx = fy = 525",
+                           "calibration.txt as 'fx fy cx cy'"})
     EXPECT_NE(r.err.find(part), std::string::npos) << part << "\n" << r.err;
   r = odometry(real.string(), dir, 2);
   EXPECT_EQ(r.code, 0) << r.err;

@@ -112,8 +112,9 @@ TumSource::TumSource(const std::string& folder, const TumSourceParams& params)
           "warning: TUM folder '" + folder +
           "': its path names no Freiburg camera (freiburg1/2/3 or fr1/2/3), so the intrinsics "
           "are ros_default (fx = fy = 525, cx = 319.5, cy = 239.5 at 640x480); if they are not "
-          "this camera's, set [TumSource] intrinsics = fr1|fr2|fr3|ros_default, or explicit with "
-          "fx, fy, cx, cy, in an INI file given with --config";
+          "this camera's, write them to the folder's calibration.txt as 'fx fy cx cy', or set "
+          "[TumSource] intrinsics = fr1|fr2|fr3|ros_default, or explicit with fx, fy, cx, cy, in "
+          "an INI file given with --config";
     } else {
       m_camera_origin = " (chosen by the folder's path; [TumSource] intrinsics sets them)";
     }
