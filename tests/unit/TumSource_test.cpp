@@ -2,7 +2,9 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <opencv2/imgcodecs.hpp>
+#include <sstream>
 
 #include "TestData.h"
 #include "rgbd_core/RgbdFrame.h"
@@ -125,7 +127,13 @@ TEST(TumSource, TheFoldersCalibrationTxtGivesTheCameraUnlessTheIniSetsOne) {
 
   hrgbd::TumSourceParams p;
   p.intrinsics = "fr3";
-  EXPECT_DOUBLE_EQ(hrgbd::TumSource(dir, p).camera().fx(), 535.4);
+  hrgbd::TumSource fr3(dir, p);
+  EXPECT_DOUBLE_EQ(fr3.camera().fx(), 535.4);
+  EXPECT_NE(fr3.describe().find("the folder's calibration.txt is not read"), std::string::npos)
+      << fr3.describe();
+  listed = false;  // still an input that no output may overwrite
+  for (const auto& in : fr3.inputs()) listed |= in.path == dir + "/calibration.txt";
+  EXPECT_TRUE(listed);
 }
 
 TEST(TumSource, AMalformedCalibrationTxtIsRefusedNamingItsLine) {
@@ -149,14 +157,59 @@ TEST(TumSource, AMalformedCalibrationTxtIsRefusedNamingItsLine) {
       EXPECT_NE(what.find(expected), std::string::npos) << text << " -> " << what;
     }
   }
-  // values for another image size: the principal point off these 64x48 images
-  hrgbd::TumSource src(folderWithCalibration("tum_bad_calibration", "525 525 319.5 239.5\n"));
+  // values no camera of these 64x48 images has: refused when the first frame says their size
+  const std::pair<const char*, const char*> impossible[] = {
+      {"525 525 319.5 239.5\n", "calibration.txt': cx = 319.5 lies outside the 64x48 image"},
+      {"1e300 50 31.5 23.5\n", "calibration.txt': fx = 1e+300 is no focal length for the 64x48"},
+      {"50 1e-300 31.5 23.5\n", "calibration.txt': fy = 1e-300 is no focal length"},
+  };
+  for (const auto& [text, expected] : impossible) {
+    hrgbd::TumSource src(folderWithCalibration("tum_bad_calibration", text));
+    try {
+      src.next();
+      FAIL() << "accepted: " << text;
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+    }
+  }
+  // a broken link is no missing file (that would guess the camera from the path)
+  const auto dir = folderWithCalibration("tum_bad_calibration", "");
+  std::filesystem::remove(dir + "/calibration.txt");
+  std::filesystem::create_symlink(dir + "/nowhere.txt", dir + "/calibration.txt");
   try {
-    src.next();
-    FAIL() << "a principal point off the image was accepted";
+    hrgbd::TumSource src(dir);
+    FAIL() << "a broken calibration.txt link was accepted";
   } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find("calibration.txt': cx = 319.5 lies outside the 64x48"),
+    EXPECT_NE(std::string(e.what()).find("calibration.txt' is a broken symbolic link"),
               std::string::npos)
         << e.what();
   }
+}
+
+TEST(TumSource, IntrinsicsForTwiceTheImageSizeAreSaidOnce) {
+  // the values of a 32x24 camera for 64x48 images: the principal point a quarter off the centre
+  const auto dir = folderWithCalibration("tum_half_calibration", "26.25 26.25 15.75 11.75\n");
+  std::ostringstream err;
+  auto* old = std::cerr.rdbuf(err.rdbuf());
+  {
+    hrgbd::TumSource src(dir);
+    EXPECT_TRUE(src.next());
+    EXPECT_TRUE(src.next() == nullptr);
+    hrgbd::TumSource again(dir);  // once per folder, as a benchmark opens it per method
+    EXPECT_TRUE(again.next());
+  }
+  std::cerr.rdbuf(old);
+  const auto text = err.str();
+  EXPECT_NE(text.find("calibration.txt': the principal point (15.75, 11.75) lies more than a "
+                      "sixth of the 64x48 image"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("intrinsics for another image size?"), std::string::npos) << text;
+  EXPECT_EQ(text.find("warning", 1), std::string::npos) << "said twice: " << text;
+  // centred values give no warning
+  std::ostringstream quiet;
+  old = std::cerr.rdbuf(quiet.rdbuf());
+  EXPECT_TRUE(hrgbd::TumSource(folderWithCalibration("tum_centred", "50 50 31.5 23.5\n")).next());
+  std::cerr.rdbuf(old);
+  EXPECT_EQ(quiet.str(), "");
 }

@@ -55,10 +55,9 @@ TumCalibration parseTumCalibrationText(const std::string& text, const std::strin
                                " gave them); expected one 'fx fy cx cy'");
     std::istringstream ss(line);
     std::string extra;
+    // (>> fails on nan, inf and values out of the double's range)
     if (!(ss >> c.fx >> c.fy >> c.cx >> c.cy) || ss >> extra)
-      throw std::runtime_error(where + ": expected 'fx fy cx cy', four numbers in pixels");
-    for (const double v : {c.fx, c.fy, c.cx, c.cy})
-      if (!std::isfinite(v)) throw std::runtime_error(where + ": a value is not finite");
+      throw std::runtime_error(where + ": expected 'fx fy cx cy', four finite numbers in pixels");
     if (!(c.fx > 0 && c.fy > 0))
       throw std::runtime_error(where + ": the focal lengths fx, fy must be positive");
     found_at = line_no;

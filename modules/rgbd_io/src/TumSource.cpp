@@ -87,10 +87,16 @@ TumSource::TumSource(const std::string& folder, const TumSourceParams& params)
     throw std::runtime_error("'" + folder + "': no colour/depth pair closer than " +
                              std::to_string(params.max_time_difference) + " s");
 
+  // Explicit intrinsics (the INI's or the folder's calibration.txt) are in pixels of the folder's
+  // own images: their size is the first frame's (0 x 0 until it is read).
   m_camera_name = params.intrinsics;
   const auto calibration = folder + "/calibration.txt";
-  if (m_camera_name == "auto" && mrpt::system::fileExists(calibration)) {
+  const bool has_calibration =
+      std::filesystem::is_symlink(calibration) || std::filesystem::exists(calibration);
+  if (m_camera_name == "auto" && has_calibration) {
     // The folder says its camera (ETH3D's RGB-D folders, rgbd-simulate --tum): no guess.
+    if (!std::filesystem::exists(calibration))
+      throw std::runtime_error("'" + calibration + "' is a broken symbolic link");
     const auto c =
         parseTumCalibrationText(readTextFile(calibration, "TUM calibration"), calibration);
     m_camera = pinholeCamera(c.fx, c.fy, c.cx, c.cy, 0, 0);
@@ -99,8 +105,8 @@ TumSource::TumSource(const std::string& folder, const TumSourceParams& params)
     m_camera_origin = " (the folder's own: fx " + formatSeconds(c.fx) + ", fy " +
                       formatSeconds(c.fy) + ", cx " + formatSeconds(c.cx) + ", cy " +
                       formatSeconds(c.cy) +
-                      "; [TumSource] intrinsics other than auto overrides it)";
-    m_inputs.push_back({calibration, "the TUM folder's calibration.txt"});
+                      "; no lens distortion or rolling shutter; [TumSource] intrinsics other "
+                      "than auto overrides it)";
   } else if (m_camera_name == "auto") {
     // normalised: "..", run from inside a folder named for a camera, names its parent
     m_camera_name = guessTumPreset(std::filesystem::absolute(folder).lexically_normal().string());
@@ -118,20 +124,21 @@ TumSource::TumSource(const std::string& folder, const TumSourceParams& params)
     } else {
       m_camera_origin = " (chosen by the folder's path; [TumSource] intrinsics sets them)";
     }
-  }
-  // Explicit intrinsics are in pixels of the folder's own images: their size is the first
-  // frame's (0 x 0 until it is read).
-  if (m_camera_name == "explicit")
-    m_camera = pinholeCamera(params.fx, params.fy, params.cx, params.cy, 0, 0);
-  else if (m_calibration_file.empty())
     m_camera = intrinsicsPreset(m_camera_name);
+  } else {
+    m_camera = m_camera_name == "explicit"
+                   ? pinholeCamera(params.fx, params.fy, params.cx, params.cy, 0, 0)
+                   : intrinsicsPreset(m_camera_name);
+    if (has_calibration)
+      m_camera_origin = " ([TumSource] intrinsics; the folder's calibration.txt is not read)";
+  }
 
   const auto gt = folder + "/groundtruth.txt";
   if (mrpt::system::fileExists(gt)) m_ground_truth = loadTumTrajectory(gt);
 
   // What no output may overwrite: the lists, the ground truth, the association lists TUM's
   // associate.py writes (associat*.txt) and every image listed, paired or not.
-  for (const auto* name : {"rgb.txt", "depth.txt", "groundtruth.txt"})
+  for (const auto* name : {"rgb.txt", "depth.txt", "groundtruth.txt", "calibration.txt"})
     m_inputs.push_back({folder + "/" + name, std::string("the TUM folder's ") + name});
   std::error_code ec;
   for (const auto& f : std::filesystem::directory_iterator(folder, ec)) {
@@ -182,16 +189,7 @@ mrpt::img::TCamera TumSource::cameraFor(cv::Size size, const std::string& file) 
   if (cam.ncols == 0) {  // explicit: for the images as they are
     cam.ncols = size.width;
     cam.nrows = size.height;
-    // A principal point off the image is a value meant for other images (or a typo): it ran,
-    // every frame "ok" on a wrong camera.
-    for (const auto& [key, value, extent] :
-         {std::tuple{"cx", cam.cx(), size.width}, std::tuple{"cy", cam.cy(), size.height}})
-      if (!(value >= 0 && value <= extent))
-        throw std::runtime_error(
-            (m_calibration_file.empty() ? "[TumSource] " : "'" + m_calibration_file + "': ") +
-            std::string(key) + " = " + formatSeconds(value) + " lies outside the " +
-            sizeText(size) + " image '" + file +
-            "'; the principal point is in pixels of the folder's images");
+    checkExplicitCamera(cam, size, file);
     return cam;
   }
   if (size.width == int(cam.ncols) && size.height == int(cam.nrows)) return cam;
@@ -205,6 +203,37 @@ mrpt::img::TCamera TumSource::cameraFor(cv::Size size, const std::string& file) 
         "[TumSource] intrinsics = explicit with fx, fy, cx, cy in pixels of these images");
   cam.scaleToResolution(size.width, size.height);
   return cam;
+}
+
+void TumSource::checkExplicitCamera(const mrpt::img::TCamera& cam, cv::Size size,
+                                    const std::string& file) const {
+  const auto origin =
+      m_calibration_file.empty() ? std::string("[TumSource] ") : "'" + m_calibration_file + "': ";
+  // A principal point off the image, or a focal length no pinhole lens has (a field of view
+  // wider than 169 or narrower than 3 degrees), is a value meant for other images, or a typo.
+  // They ran, every frame "ok" on a wrong camera.
+  for (const auto& [key, value, extent] :
+       {std::tuple{"cx", cam.cx(), size.width}, std::tuple{"cy", cam.cy(), size.height}})
+    if (!(value >= 0 && value <= extent))
+      throw std::runtime_error(origin + key + " = " + formatSeconds(value) + " lies outside the " +
+                               sizeText(size) + " image '" + file +
+                               "'; the principal point is in pixels of the folder's images");
+  for (const auto& [key, value, extent] :
+       {std::tuple{"fx", cam.fx(), size.width}, std::tuple{"fy", cam.fy(), size.height}})
+    if (!(value >= extent / 20.0 && value <= extent * 20.0))
+      throw std::runtime_error(origin + key + " = " + formatSeconds(value) +
+                               " is no focal length " + "for the " + sizeText(size) + " image '" +
+                               file + "' (it must lie " + "between 1/20 and 20 times the image's " +
+                               (key[1] == 'x' ? "width" : "height") + ")");
+  // Values for twice or half the image size put the principal point a quarter of the image off
+  // its centre; a real camera's lies near it. Said, not refused: a cropped image is off-centre.
+  const double off_x = std::abs(cam.cx() - (size.width - 1) / 2.0) / size.width;
+  const double off_y = std::abs(cam.cy() - (size.height - 1) / 2.0) / size.height;
+  if (std::max(off_x, off_y) > 1.0 / 6)
+    warnOnce(m_folder, "warning: " + origin + "the principal point (" + formatSeconds(cam.cx()) +
+                           ", " + formatSeconds(cam.cy()) + ") lies more than a sixth of the " +
+                           sizeText(size) + " image '" + file + "' off its centre: are these " +
+                           "intrinsics for another image size?");
 }
 
 std::string TumSource::describe() const {

@@ -31,7 +31,7 @@ struct TumCalibration {
   double fx = 0, fy = 0, cx = 0, cy = 0;  //!< [px]
 };
 
-/** Parses a calibration.txt: one line of four numbers, fx and fy positive, every one finite;
+/** Parses a calibration.txt: one line of four finite numbers, fx and fy positive;
  * comments ('#') and blank lines skipped. Throws std::runtime_error naming the file and line for
  * anything else (fewer or more numbers, a second line of numbers, text). */
 TumCalibration parseTumCalibrationText(const std::string& text, const std::string& name);

@@ -48,17 +48,21 @@ struct TumSourceParams : public Params<TumSourceParams> {
 
 class TumSource : public FrameSource {
  public:
-  /** Reads and associates the lists now; throws naming the file if anything is wrong. Frames carry
+  /** Reads and associates the lists, and the calibration.txt it uses (a malformed one, or a
+   * broken link, is refused); throws naming the file if anything is wrong. Frames carry
    * their list time stamps exactly (Timestamp.h). Image names in the lists are relative to the
    * folder, or absolute. next() throws naming the image for: a missing or undecodable image, a
    * depth image that is not single-channel 16-bit, colour and depth of different sizes, a size
    * other than the first frame's, a size the preset intrinsics cannot be scaled to (another
-   * aspect ratio), and an image declaring more than 4096 x 4096 pixels. */
+   * aspect ratio), explicit intrinsics (INI or calibration.txt) with a principal point off the
+   * image or a focal length outside 1/20 to 20 times its size, and an image declaring more than
+   * 4096 x 4096 pixels. */
   TumSource(const std::string& folder, const TumSourceParams& params = {});
   mrpt::obs::CObservation3DRangeScan::Ptr next() override;
   Trajectory groundTruth() const override { return m_ground_truth; }
   std::string describe() const override;
-  /** The lists, groundtruth.txt, association lists (associat*.txt) and every listed image. */
+  /** The lists, groundtruth.txt, calibration.txt, association lists (associat*.txt) and every
+   * listed image, present or not. */
   std::vector<JobPath> inputs() const override { return m_inputs; }
 
   const mrpt::img::TCamera& camera() const { return m_camera; }
@@ -87,6 +91,10 @@ class TumSource : public FrameSource {
 
   std::string imagePath(const std::string& file) const;
   mrpt::img::TCamera cameraFor(cv::Size size, const std::string& file) const;
+  /** Throws for a principal point off the image or a focal length outside 1/20 to 20 times the
+   * image size; warns once for a principal point over a sixth of the image off its centre. */
+  void checkExplicitCamera(const mrpt::img::TCamera& cam, cv::Size size,
+                           const std::string& file) const;
 };
 
 }  // namespace hrgbd
