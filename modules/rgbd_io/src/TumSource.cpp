@@ -4,6 +4,7 @@
 #include <mrpt/system/filesystem.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <iostream>
@@ -136,8 +137,9 @@ TumSource::TumSource(const std::string& folder, const TumSourceParams& params)
   const auto gt = folder + "/groundtruth.txt";
   if (mrpt::system::fileExists(gt)) m_ground_truth = loadTumTrajectory(gt);
 
-  // What no output may overwrite: the lists, the ground truth, the association lists TUM's
-  // associate.py writes (associat*.txt) and every image listed, paired or not.
+  // What no output may overwrite: the lists, the ground truth, the calibration (read or not), the
+  // association lists TUM's associate.py writes (associat*.txt) and every image listed, paired or
+  // not.
   for (const auto* name : {"rgb.txt", "depth.txt", "groundtruth.txt", "calibration.txt"})
     m_inputs.push_back({folder + "/" + name, std::string("the TUM folder's ") + name});
   std::error_code ec;
@@ -222,8 +224,8 @@ void TumSource::checkExplicitCamera(const mrpt::img::TCamera& cam, cv::Size size
        {std::tuple{"fx", cam.fx(), size.width}, std::tuple{"fy", cam.fy(), size.height}})
     if (!(value >= extent / 20.0 && value <= extent * 20.0))
       throw std::runtime_error(origin + key + " = " + formatSeconds(value) +
-                               " is no focal length " + "for the " + sizeText(size) + " image '" +
-                               file + "' (it must lie " + "between 1/20 and 20 times the image's " +
+                               " is no focal length for the " + sizeText(size) + " image '" + file +
+                               "' (it must lie between 1/20 and 20 times the image's " +
                                (key[1] == 'x' ? "width" : "height") + ")");
   // Values for twice or half the image size put the principal point a quarter of the image off
   // its centre; a real camera's lies near it. Said, not refused: a cropped image is off-centre.
@@ -232,8 +234,8 @@ void TumSource::checkExplicitCamera(const mrpt::img::TCamera& cam, cv::Size size
   if (std::max(off_x, off_y) > 1.0 / 6)
     warnOnce(m_folder, "warning: " + origin + "the principal point (" + formatSeconds(cam.cx()) +
                            ", " + formatSeconds(cam.cy()) + ") lies more than a sixth of the " +
-                           sizeText(size) + " image '" + file + "' off its centre: are these " +
-                           "intrinsics for another image size?");
+                           sizeText(size) + " image '" + file +
+                           "' off its centre: are these intrinsics for another image size?");
 }
 
 std::string TumSource::describe() const {

@@ -79,7 +79,7 @@ class TumSource : public FrameSource {
   TumSourceParams m_params;
   mrpt::img::TCamera m_camera;
   std::string m_camera_name;
-  std::string m_camera_origin;       //!< how "auto" chose the intrinsics, for describe()
+  std::string m_camera_origin;       //!< where the intrinsics come from, for describe()
   std::string m_calibration_file;    //!< the folder's calibration.txt, when "auto" read it
   std::string m_intrinsics_warning;  //!< printed once, when the first frame is read
   cv::Size m_first_size;             //!< size of the first frame read
