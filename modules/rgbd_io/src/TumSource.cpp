@@ -168,6 +168,8 @@ mrpt::obs::CObservation3DRangeScan::Ptr TumSource::next() {
                              depth_path + "' is " + sizeText(depth.size()) +
                              "; colour and depth images must have one size");
   if (m_first_size.empty()) {
+    // explicit intrinsics: checked once, every frame has this size
+    if (m_camera.ncols == 0) checkExplicitCamera(m_camera, depth.size(), rgb_path);
     m_first_size = depth.size();
     m_first_file = rgb_path;
   } else if (depth.size() != m_first_size) {
@@ -191,7 +193,6 @@ mrpt::img::TCamera TumSource::cameraFor(cv::Size size, const std::string& file) 
   if (cam.ncols == 0) {  // explicit: for the images as they are
     cam.ncols = size.width;
     cam.nrows = size.height;
-    checkExplicitCamera(cam, size, file);
     return cam;
   }
   if (size.width == int(cam.ncols) && size.height == int(cam.nrows)) return cam;

@@ -265,12 +265,10 @@ class SequenceWriter {
       saveTumTrajectory(m_outputs.tum_folder + "/groundtruth.txt", ground_truth);
       // The camera, so that the folder is not read with one guessed from its name
       // (TumSource: ETH3D's "fx fy cx cy").
-      std::ostringstream calibration;
-      calibration << std::setprecision(17) << m_camera.fx() << ' ' << m_camera.fy() << ' '
-                  << m_camera.cx() << ' ' << m_camera.cy() << '\n';
-      const auto text = calibration.str();
-      writeOutputFile(m_outputs.tum_folder + "/calibration.txt", "TUM calibration", text.data(),
-                      text.size());
+      StreamOutput calibration(m_outputs.tum_folder + "/calibration.txt", "TUM calibration");
+      calibration.stream() << std::setprecision(17) << m_camera.fx() << ' ' << m_camera.fy() << ' '
+                           << m_camera.cx() << ' ' << m_camera.cy() << '\n';
+      calibration.commit();
     }
   }
 

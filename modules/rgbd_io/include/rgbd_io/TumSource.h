@@ -91,8 +91,9 @@ class TumSource : public FrameSource {
 
   std::string imagePath(const std::string& file) const;
   mrpt::img::TCamera cameraFor(cv::Size size, const std::string& file) const;
-  /** Throws for a principal point off the image or a focal length outside 1/20 to 20 times the
-   * image size; warns once for a principal point over a sixth of the image off its centre. */
+  /** For the first frame (`size`, colour image `file`): throws for a principal point off the
+   * image or a focal length outside 1/20 to 20 times the image size; warns once for a principal
+   * point over a sixth of the image off its centre. */
   void checkExplicitCamera(const mrpt::img::TCamera& cam, cv::Size size,
                            const std::string& file) const;
 };
