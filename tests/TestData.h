@@ -5,6 +5,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <stdexcept>
 #include <string>
 #include <system_error>
 #include <utility>
@@ -48,6 +49,17 @@ inline std::string tempDir(const std::string& name) { return TempDirs::add(name,
 /** A tempDir() that is removed at exit in any case, for tests that write large files
  * (recordings of tens of MB). */
 inline std::string scratchDir(const std::string& name) { return TempDirs::add(name, true); }
+
+/** The message of the std::runtime_error `f` throws ("" if none). */
+template <class F>
+std::string errorOf(F f) {
+  try {
+    f();
+  } catch (const std::runtime_error& e) {
+    return e.what();
+  }
+  return "";
+}
 
 }  // namespace hrgbd::test
 

@@ -29,17 +29,6 @@ std::size_t entries(const std::string& dir) {
   return static_cast<std::size_t>(std::distance(begin(it), end(it)));
 }
 
-/** The message of the std::runtime_error `f` throws ("" if none). */
-template <class F>
-std::string errorOf(F f) {
-  try {
-    f();
-  } catch (const std::runtime_error& e) {
-    return e.what();
-  }
-  return "";
-}
-
 }  // namespace
 
 TEST(OutputFile, AppearsUnderItsNameOnlyWhenCommitted) {
@@ -79,14 +68,14 @@ TEST(OutputFile, ASymbolicLinkKeepsPointingAtTheNewFile) {
 
 TEST(OutputFile, DevicesAreWrittenInPlaceAndChecked) {
   // /dev/full takes no data: the error names it, on the first flush at the latest.
-  const auto full = errorOf([] {
+  const auto full = hrgbd::test::errorOf([] {
     hrgbd::StreamOutput out("/dev/full", "trajectory");
     out.stream() << "1 0 0 0 0 0 0 1\n";
     out.commit();
   });
   EXPECT_NE(full.find("cannot write trajectory '/dev/full'"), std::string::npos) << full;
   EXPECT_NE(full.find("No space left"), std::string::npos) << full;
-  EXPECT_NE(errorOf([] {
+  EXPECT_NE(hrgbd::test::errorOf([] {
               const char bytes[1 << 16] = {};  // larger than the stream's buffer
               hrgbd::writeOutputFile("/dev/full", "plot", bytes, sizeof bytes);
             }).find("/dev/full"),
@@ -100,13 +89,14 @@ TEST(OutputFile, DevicesAreWrittenInPlaceAndChecked) {
 
 TEST(OutputFile, UnwritablePlacesAreErrorsNamingThem) {
   const auto dir = hrgbd::test::tempDir("output_file_bad");
-  const auto missing = errorOf([&] { hrgbd::OutputFile f(dir + "/no/such/t.txt", "CSV"); });
+  const auto missing =
+      hrgbd::test::errorOf([&] { hrgbd::OutputFile f(dir + "/no/such/t.txt", "CSV"); });
   EXPECT_NE(missing.find("cannot write CSV '" + dir + "/no/such/t.txt'"), std::string::npos)
       << missing;
   EXPECT_NE(missing.find("does not exist"), std::string::npos) << missing;
-  const auto folder = errorOf([&] { hrgbd::OutputFile f(dir, "CSV"); });
+  const auto folder = hrgbd::test::errorOf([&] { hrgbd::OutputFile f(dir, "CSV"); });
   EXPECT_NE(folder.find("it is a folder"), std::string::npos) << folder;
-  EXPECT_NE(errorOf([] { hrgbd::OutputFile f("", "CSV"); }), "");
+  EXPECT_NE(hrgbd::test::errorOf([] { hrgbd::OutputFile f("", "CSV"); }), "");
 }
 
 TEST(GzOutput, CompressedArchivesAreCheckedAndAppearOnlyWhenClosed) {
@@ -125,7 +115,8 @@ TEST(GzOutput, CompressedArchivesAreCheckedAndAppearOnlyWhenClosed) {
   mrpt::serialization::archiveFrom(in) >> back;
   EXPECT_NEAR((back.asVectorVal() - pose.asVectorVal()).norm(), 0, 1e-12);
   // gzip buffers: the failure shows at the latest when the stream is closed.
-  const auto full = errorOf([&] { hrgbd::saveCompressed(pose, "/dev/full", "simplemap"); });
+  const auto full =
+      hrgbd::test::errorOf([&] { hrgbd::saveCompressed(pose, "/dev/full", "simplemap"); });
   EXPECT_NE(full.find("cannot write simplemap '/dev/full'"), std::string::npos) << full;
   EXPECT_EQ(full.find("MRPT exception"), std::string::npos) << full;
 }

@@ -102,16 +102,6 @@ std::string folderWithCalibration(const std::string& name, const std::string& ca
   return dir;
 }
 
-/** The message of the std::runtime_error `run` throws; "" if it throws none. */
-template <class F>
-std::string errorOf(F run) {
-  try {
-    run();
-  } catch (const std::runtime_error& e) {
-    return e.what();
-  }
-  return "";
-}
 }  // namespace
 
 TEST(TumSource, TheFoldersCalibrationTxtGivesTheCameraUnlessTheIniSetsOne) {
@@ -159,7 +149,7 @@ TEST(TumSource, AMalformedCalibrationTxtIsRefusedNamingItsLine) {
   };
   for (const auto& [text, expected] : cases) {
     const auto dir = folderWithCalibration("tum_bad_calibration", text);
-    const auto what = errorOf([&] { hrgbd::TumSource src(dir); });
+    const auto what = hrgbd::test::errorOf([&] { hrgbd::TumSource src(dir); });
     EXPECT_NE(what.find("calibration.txt' "), std::string::npos) << text << " -> " << what;
     EXPECT_NE(what.find(expected), std::string::npos) << text << " -> " << what;
   }
@@ -171,14 +161,14 @@ TEST(TumSource, AMalformedCalibrationTxtIsRefusedNamingItsLine) {
   };
   for (const auto& [text, expected] : impossible) {
     hrgbd::TumSource src(folderWithCalibration("tum_bad_calibration", text));
-    const auto what = errorOf([&] { src.next(); });
+    const auto what = hrgbd::test::errorOf([&] { src.next(); });
     EXPECT_NE(what.find(expected), std::string::npos) << text << " -> " << what;
   }
   // a broken link is no missing file (that would guess the camera from the path)
   const auto dir = folderWithCalibration("tum_bad_calibration", "");
   std::filesystem::remove(dir + "/calibration.txt");
   std::filesystem::create_symlink(dir + "/nowhere.txt", dir + "/calibration.txt");
-  const auto what = errorOf([&] { hrgbd::TumSource src(dir); });
+  const auto what = hrgbd::test::errorOf([&] { hrgbd::TumSource src(dir); });
   EXPECT_NE(what.find("calibration.txt' is a broken symbolic link"), std::string::npos) << what;
 }
 
