@@ -1,8 +1,8 @@
 // The dense refinement on rendered pairs with an exact relative pose: convergence from a few cm
 // and degrees off, a correct estimate left in place, exact depth weighted by its own scale and
-// Kinect-noisy depth by the model's, the better of two starts, no evaluation spent on a converged
-// estimate, and no refinement without anything to refine with; a result of the prediction alone
-// is no sparse fit. The rolling shutter: DenseRollingShutter_test.cpp.
+// Kinect-noisy depth by the model's, the better of two starts, starts that meet refined once, no
+// evaluation spent on a converged estimate, and no refinement without anything to refine with; a
+// result of the prediction alone is no sparse fit. The rolling shutter: DenseRollingShutter_test.cpp.
 #include "rgbd_odometry/DenseRefinement.h"
 
 #include <gtest/gtest.h>
@@ -105,6 +105,19 @@ TEST(DenseRefinement, TheBetterStartWins) {
     EXPECT_TRUE(starts[d.start].isApprox(near));
     EXPECT_LT(error(d.T, pair.truth).first, 0.001);
   }
+}
+
+TEST(DenseRefinement, StartsThatMeetAreRefinedOnce) {
+  const auto pair = renderPair("desk", kMotion);
+  const Isometry3d start = perturbed(pair.truth, 0.01, 1.0);
+  const auto one = hrgbd::refineDense(pair.cur, pair.ref, {start}, hrgbd::DenseParams());
+  const auto two = hrgbd::refineDense(pair.cur, pair.ref, {start, start}, hrgbd::DenseParams());
+  ASSERT_TRUE(one.ok && two.ok) << one.detail << two.detail;
+  EXPECT_EQ(two.start, 0u);
+  EXPECT_TRUE(two.T.isApprox(one.T));
+  // the copy is dropped after the coarsest level: not every level's steps twice
+  EXPECT_LT(two.iterations, 2 * one.iterations);
+  EXPECT_GT(two.iterations, one.iterations);
 }
 
 TEST(DenseRefinement, NothingToRefineWithIsNotOk) {
