@@ -348,8 +348,9 @@ DenseResult refineDense(const DensePyramid& cur, const DensePyramid& ref,
                       [&](const Refined& r) { return together(r.T, refined[j].T); }))
         refined.erase(refined.begin() + static_cast<std::ptrdiff_t>(j));
   }
-  // scored on one depth scale, the most lenient of the starts': a start still far off measures
-  // the model's, and its rival judged on an exact depth's would lose on the capped costs
+  // scored on one depth scale, the most lenient of the starts' that reached the finest level: a
+  // start still far off measures the model's, and its rival judged on an exact depth's would lose
+  // on the capped costs (a dropped start was where the one it joined is, with its scale)
   double depth_noise = 0;
   for (const auto& r : refined) depth_noise = std::max(depth_noise, r.scales.depth_noise);
   double best = 1e300;

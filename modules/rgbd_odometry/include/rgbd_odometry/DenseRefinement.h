@@ -138,11 +138,11 @@ struct DenseResult {
 };
 
 /** Refines a motion (current -> reference) by minimising the joint cost, coarse to fine. Each of
- * `starts` is refined through every level and the one that fits best at the finest level wins
- * (most points paired with small residuals): a wrong sparse estimate loses against the motion
- * prediction. A start that a level brings next to an earlier one (0.5 mm, 0.03 deg) is dropped:
- * the earlier one goes on alone. Not ok (T = starts[0]) when the winner has fewer than min_pixels
- * pairs in all. */
+ * `starts` is refined level by level and the one that fits best at the finest level wins (most
+ * points paired with small residuals): a wrong sparse estimate loses against the motion
+ * prediction. A start that a coarser level brings next to an earlier one (0.5 mm, 0.03 deg) is
+ * dropped there: the earlier one goes on alone. Not ok (T = starts[0]) when the winner has fewer
+ * than min_pixels pairs in all. */
 DenseResult refineDense(const DensePyramid& cur, const DensePyramid& ref,
                         const std::vector<Eigen::Isometry3d>& starts, const DenseParams& params,
                         const ReadoutMotion& cur_readout = ReadoutMotion::Zero(),
