@@ -101,8 +101,7 @@ TumSource::TumSource(const std::string& folder, const TumSourceParams& params)
     const auto c =
         parseTumCalibrationText(readTextFile(calibration, "TUM calibration"), calibration);
     m_camera = pinholeCamera(c.fx, c.fy, c.cx, c.cy, 0, 0);
-    m_camera_name = "calibration.txt";
-    m_calibration_file = calibration;
+    m_camera_name = "calibration.txt";  // checkExplicitCamera() names the file by this
     m_camera_origin = " (the folder's own: fx " + formatSeconds(c.fx) + ", fy " +
                       formatSeconds(c.fy) + ", cx " + formatSeconds(c.cx) + ", cy " +
                       formatSeconds(c.cy) +
@@ -210,8 +209,8 @@ mrpt::img::TCamera TumSource::cameraFor(cv::Size size, const std::string& file) 
 
 void TumSource::checkExplicitCamera(const mrpt::img::TCamera& cam, cv::Size size,
                                     const std::string& file) const {
-  const auto origin =
-      m_calibration_file.empty() ? std::string("[TumSource] ") : "'" + m_calibration_file + "': ";
+  const auto origin = m_camera_name == "calibration.txt" ? "'" + m_folder + "/calibration.txt': "
+                                                         : std::string("[TumSource] ");
   // A principal point off the image, or a focal length no pinhole lens has (a field of view
   // wider than 169 or narrower than 3 degrees), is a value meant for other images, or a typo.
   // They ran, every frame "ok" on a wrong camera.

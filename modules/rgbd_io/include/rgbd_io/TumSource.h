@@ -80,7 +80,6 @@ class TumSource : public FrameSource {
   mrpt::img::TCamera m_camera;
   std::string m_camera_name;
   std::string m_camera_origin;       //!< where the intrinsics come from, for describe()
-  std::string m_calibration_file;    //!< the folder's calibration.txt, when "auto" read it
   std::string m_intrinsics_warning;  //!< printed once, when the first frame is read
   cv::Size m_first_size;             //!< size of the first frame read
   std::string m_first_file;          //!< its colour image
