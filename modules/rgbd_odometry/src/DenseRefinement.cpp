@@ -129,6 +129,8 @@ class LevelSolver {
         m_geometric_weight(p.geometric_weight * stride * stride),
         m_skip_untextured(!ref.textured.empty() && p.min_gradient >= ref.textured_gradient) {}
 
+  double fx() const { return m_ref.cam.fx; }  //!< [px] of the level
+
   // Undoes the reference's rolling shutter for motions near T: each point is moved by the
   // reference's motion between the frame time and the row T maps it to, taken into the current
   // frame. Fixed for a level's iterations (a step moves the row by about a pixel at the finest
@@ -297,9 +299,9 @@ NormalEquations solveLevel(LevelSolver& solver, Eigen::Isometry3d& T, const Dens
     const Vector6d delta = n.H.ldlt().solve(-n.b);
     if (!delta.allFinite()) break;
     const Eigen::Isometry3d next = expSe3(delta) * T;
-    // converged (0.1 mm, 0.006 deg): the step is taken without an evaluation of its own (the
-    // level would end after it whether accepted or refused)
-    if (delta.norm() < 1e-4) {
+    // converged (the image moves by under converged_px): the step is taken without an
+    // evaluation of its own (the level would end after it whether accepted or refused)
+    if (delta.norm() * solver.fx() < p.converged_px) {
       T = next;
       break;
     }
@@ -311,14 +313,16 @@ NormalEquations solveLevel(LevelSolver& solver, Eigen::Isometry3d& T, const Dens
   return n;
 }
 
-// Whether two refinements of different starts have met: within 0.5 mm and 0.03 deg (metres and
-// radians together). On fr1/rpy 57 of the 70 frames with two starts ended within this; dropping
-// the later start once a level brings it there took 12 % off the refinement's time over the
-// sequence with the same ATE on every real folder and the simulated suite.
-bool together(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b) {
+// Whether two refinements of different starts have met at a level: within two converged steps
+// there (`step`: converged_px / fx of the level; metres and radians together). On fr1/rpy 57 of
+// the 70 frames with two starts ended within 0.5 mm and 0.03 deg; dropping the later start once a
+// level brings it there took 12 % off the refinement's time over the sequence with the same ATE on
+// every real folder and the simulated suite. (A fixed 0.5 mm is too tight once the coarser
+// levels stop at their own precision: the starts were then both refined to the finest level.)
+bool together(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b, double step) {
   const Eigen::Isometry3d d = a.inverse() * b;
   const double t = d.translation().norm(), w = Eigen::AngleAxisd(d.rotation()).angle();
-  return t * t + w * w < 5e-4 * 5e-4;
+  return t * t + w * w < 4 * step * step;
 }
 
 }  // namespace
@@ -354,9 +358,10 @@ DenseResult refineDense(const DensePyramid& cur, const DensePyramid& ref,
     }
     // a start that a level brought next to an earlier one would follow it through the finer
     // levels: only the earlier one goes on
+    const double step = p.converged_px / solvers[l].fx();  // a converged step there
     for (std::size_t j = refined.size(); l > 0 && j-- > 1;)
       if (std::any_of(refined.begin(), refined.begin() + static_cast<std::ptrdiff_t>(j),
-                      [&](const Refined& r) { return together(r.T, refined[j].T); }))
+                      [&](const Refined& r) { return together(r.T, refined[j].T, step); }))
         refined.erase(refined.begin() + static_cast<std::ptrdiff_t>(j));
   }
   // scored on one depth scale, the most lenient of the starts' that reached the finest level: a

@@ -24,6 +24,13 @@ struct DenseParams : public Params<DenseParams> {
   int levels = 4;        //!< pyramid levels, each half the size of the one below
   int finest_level = 1;  //!< 0 = full resolution; 1 = half (faster, nearly as accurate)
   int iterations = 10;   //!< most Gauss-Newton steps per level
+  /** [px] a Gauss-Newton step that moves the image by less than this (rotation, and translation
+   * at 1 m) at its level is taken without an evaluation and ends the level. 0.05 px is 0.2 mm and
+   * 0.011 deg at the half-size level of a Kinect (the default finest level), twice that one level
+   * coarser. It was a fixed 0.1 mm / 0.006 deg at every level, and half of the finest level's
+   * evaluations were of steps under 0.3 mm: 0.05 px took the refinement's median on fr1/rpy from
+   * 13.5 to 10.9 ms (0.80) with the same ATE on the six real folders and the simulated suite. */
+  double converged_px = 0.05;
   double photometric_weight = 1;  //!< weight of the intensity term (0 = off)
   double geometric_weight = 1;    //!< weight of the point-to-plane term (0 = off)
   /** the point-to-plane term at the finest level on every n-th row and column (weighted n^2 to
@@ -62,6 +69,7 @@ struct DenseParams : public Params<DenseParams> {
     HRGBD_PARAM(levels, "pyramid levels, each half the size", Range::closed(1, 8));
     HRGBD_PARAM(finest_level, "0 = full resolution, 1 = half, ...", Range::closed(0, 7));
     HRGBD_PARAM(iterations, "most Gauss-Newton steps per level", Range::atLeast(1));
+    HRGBD_PARAM(converged_px, "[px] a smaller step at its level ends the level", Range::above(0));
     HRGBD_PARAM(photometric_weight, "weight of the intensity term (0 = off)", Range::atLeast(0));
     HRGBD_PARAM(geometric_weight, "weight of the point-to-plane term (0 = off)", Range::atLeast(0));
     HRGBD_PARAM(geometric_stride, "point-to-plane term on every n-th row and column (finest level)",
