@@ -94,6 +94,10 @@ void BM_WholeFrameSparseOnly(benchmark::State& s) { twoFrames(s, "rgb_only", pai
 void BM_DensePyramid(benchmark::State& s) {
   for (auto _ : s) benchmark::DoNotOptimize(buildDensePyramid(pair().img[1], DenseParams()));
 }
+// What a tracked frame costs: its derivatives are made only if it becomes a reference.
+void BM_DensePyramidWithoutDerivatives(benchmark::State& s) {
+  for (auto _ : s) benchmark::DoNotOptimize(buildDensePyramid(pair().img[1], DenseParams(), false));
+}
 // The refinement of the sparse MSSE estimate (one start).
 void BM_DenseRefine(benchmark::State& s) {
   const DenseParams p;
@@ -218,6 +222,7 @@ BENCHMARK(BM_Ransac)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_WholeFrame)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_WholeFrameSparseOnly)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_DensePyramid)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_DensePyramidWithoutDerivatives)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_DenseRefine)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_DenseRefineTwoStartsThatMeet)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_DenseRefineRollingShutter)->Unit(benchmark::kMillisecond);

@@ -1,9 +1,9 @@
 // The dense refinement on rendered pairs with an exact relative pose: convergence from a few cm
 // and degrees off, a correct estimate left in place, exact depth weighted by its own scale and
 // Kinect-noisy depth by the model's, the better of two starts, starts that meet refined once, no
-// evaluation spent on a converged estimate, and no refinement without anything to refine with; a
-// result of the prediction alone is no sparse fit. The rolling shutter:
-// DenseRollingShutter_test.cpp.
+// evaluation spent on a converged estimate, only the reference's derivatives used, and no
+// refinement without anything to refine with; a result of the prediction alone is no sparse fit.
+// The rolling shutter: DenseRollingShutter_test.cpp.
 #include "rgbd_odometry/DenseRefinement.h"
 
 #include <gtest/gtest.h>
@@ -126,6 +126,27 @@ TEST(DenseRefinement, StartsThatMeetAreRefinedOnce) {
   EXPECT_LT(error(both.T, pair.truth).first, 0.001);
 }
 
+// A tracked frame's pyramid is built without derivatives (they are added when it becomes a
+// reference): a reference without them is refused, and the current frame's are never used.
+TEST(DenseRefinement, OnlyTheReferenceNeedsItsDerivatives) {
+  auto pair = renderPair("desk", kMotion);
+  const Isometry3d start = perturbed(pair.truth, 0.01, 1.0);
+  const hrgbd::DenseParams p;
+  const auto eager = hrgbd::refineDense(pair.cur, pair.ref, {start}, p);
+  ASSERT_TRUE(eager.ok) << eager.detail;
+  for (auto& level : pair.ref.levels) hrgbd::dropDerivatives(level);
+  const auto refused = hrgbd::refineDense(pair.cur, pair.ref, {start}, p);
+  EXPECT_FALSE(refused.ok);
+  EXPECT_NE(refused.detail.find("derivatives"), std::string::npos) << refused.detail;
+  EXPECT_TRUE(refused.T.isApprox(start));
+  for (auto& level : pair.ref.levels) hrgbd::addDerivatives(level, p);
+  for (auto& level : pair.cur.levels) hrgbd::dropDerivatives(level);
+  const auto lazy = hrgbd::refineDense(pair.cur, pair.ref, {start}, p);
+  ASSERT_TRUE(lazy.ok) << lazy.detail;
+  EXPECT_TRUE(lazy.T.isApprox(eager.T, 1e-12));
+  EXPECT_EQ(lazy.iterations, eager.iterations);
+}
+
 TEST(DenseRefinement, NothingToRefineWithIsNotOk) {
   auto pair = renderPair("desk", kMotion);
   for (auto& level : pair.cur.levels) level.depth.setTo(std::nanf(""));  // no depth at all
@@ -154,6 +175,11 @@ TEST(DenseRefinement, UnknownDepthNeverBlendsIntoTheCoarserLevels) {
   EXPECT_FLOAT_EQ(half.at<float>(2, 2), 2.0f);
   EXPECT_FLOAT_EQ(half.at<float>(3, 3), 1.0f);  // the nearest surface, not a blend with 3 m
   EXPECT_TRUE(std::isnan(pyr.levels[0].depth.at<float>(4, 4)));
+  const auto bare = hrgbd::buildDensePyramid(f, p, false);  // a tracked frame's
+  ASSERT_EQ(bare.levels.size(), 2u);
+  EXPECT_TRUE(hrgbd::hasDerivatives(pyr.levels[1]));
+  EXPECT_FALSE(hrgbd::hasDerivatives(bare.levels[1]));
+  EXPECT_EQ(cv::norm(bare.levels[1].grey, pyr.levels[1].grey, cv::NORM_INF), 0);
 }
 
 TEST(DenseRefinement, TinyImagesGiveFewerLevelsAndNoRefinement) {

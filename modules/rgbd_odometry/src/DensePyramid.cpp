@@ -101,7 +101,10 @@ void dropDerivatives(DenseLevel& level) {
   level.gx.release(), level.gy.release(), level.normals.release(), level.textured.release();
 }
 
-DensePyramid buildDensePyramid(const RgbdImage& image, const DenseParams& params) {
+bool hasDerivatives(const DenseLevel& level) { return !level.gx.empty(); }
+
+DensePyramid buildDensePyramid(const RgbdImage& image, const DenseParams& params,
+                               bool derivatives) {
   DenseLevel level;
   level.cam = image.cam;
   image.grey.convertTo(level.grey, CV_32F);
@@ -118,7 +121,7 @@ DensePyramid buildDensePyramid(const RgbdImage& image, const DenseParams& params
     }
     if (l < params.finest_level) continue;
     DenseLevel out{level.cam, level.grey, level.depth, {}, {}, {}, {}};
-    addDerivatives(out, params);
+    if (derivatives) addDerivatives(out, params);
     pyramid.levels.push_back(std::move(out));
   }
   return pyramid;

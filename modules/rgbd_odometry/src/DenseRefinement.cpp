@@ -336,6 +336,10 @@ DenseResult refineDense(const DensePyramid& cur, const DensePyramid& ref,
     return out;
   }
   out.T = starts.front();
+  if (!std::all_of(ref.levels.begin(), ref.levels.end(), hasDerivatives)) {
+    out.detail = "dense refinement: the reference pyramid has no derivatives (addDerivatives)";
+    return out;
+  }
   std::vector<LevelSolver> solvers;
   for (std::size_t l = 0; l < cur.levels.size(); ++l)
     solvers.emplace_back(cur.levels[l], ref.levels[l], p, l == 0 ? p.geometric_stride : 1,

@@ -121,7 +121,10 @@ struct DensePyramid {
  * [m] and rotation vector [rad] in the camera frame. Zero: a global shutter or unknown. */
 using ReadoutMotion = Eigen::Matrix<double, 6, 1>;
 
-DensePyramid buildDensePyramid(const RgbdImage& image, const DenseParams& params);
+/** The pyramid of a frame, each level with its derivatives (addDerivatives()) unless
+ * `derivatives` is false: only a reference needs them, and most tracked frames never become one. */
+DensePyramid buildDensePyramid(const RgbdImage& image, const DenseParams& params,
+                               bool derivatives = true);
 
 /** Adds the level's gradients, textured cells and normals, made from its grey and depth. Only a
  * reference needs them: a pyramid stored for later use may drop them (72 % of its memory) and
@@ -129,6 +132,8 @@ DensePyramid buildDensePyramid(const RgbdImage& image, const DenseParams& params
 void addDerivatives(DenseLevel& level, const DenseParams& params);
 /** Releases what addDerivatives() adds: the level keeps its camera, grey and depth. */
 void dropDerivatives(DenseLevel& level);
+/** Whether the level has what addDerivatives() adds. */
+bool hasDerivatives(const DenseLevel& level);
 
 /** Result of refineDense(). */
 struct DenseResult {
