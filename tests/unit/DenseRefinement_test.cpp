@@ -228,7 +228,7 @@ TEST(DenseRefined, AResultOfThePredictionAloneIsNotASparseFit) {
   }
 }
 
-// A step below the convergence threshold (0.1 mm, 0.006 deg) is taken without an evaluation of
+// A step below the convergence threshold (converged_px) is taken without an evaluation of
 // its own: refining a converged estimate again on one level costs no evaluation (the old rule
 // spent at least one on every call). Refined again from each result until then, at most 5 times:
 // a level may also end on a refused uphill step, which the next call evaluates again.

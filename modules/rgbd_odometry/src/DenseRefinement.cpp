@@ -98,11 +98,14 @@ struct NoiseScales {
 constexpr double kCleanestDepth = 0.02;
 /** Fewer point-to-plane pairs give no measured scale: the model's. */
 constexpr std::size_t kMinDepthPairs = 100;
-/** The noise scales are medians over every n-th point: a quarter of the pairs gives the same
- * scales to a few per cent, and the pass that measures them costs a quarter (fr1/rpy: the
- * refinement's median per frame 0.81 times as long with `inline` below, the same ATE on the real
- * folders and the simulated suite). */
+/** On a level with at least kSampledLevel points with a point-to-plane term, the noise scales
+ * are medians over every kScaleSampleStep-th point in row order (of the point-to-plane pairs
+ * every 2nd to every 4th, as the columns fall): the same scales to a few per cent, and the pass
+ * costs a quarter (fr1/rpy: the refinement's median per frame 0.81 times as long with the
+ * `inline`s above). A smaller level, cheap anyway, takes every point, so that its measured depth
+ * scale still needs kMinDepthPairs pairs, not a quarter of them. */
 constexpr std::size_t kScaleSampleStep = 4;
+constexpr std::size_t kSampledLevel = 40 * kMinDepthPairs;
 
 // The Gauss-Newton system of one evaluation: H delta = -b, and the mean robust cost.
 struct NormalEquations {
@@ -156,8 +159,9 @@ class LevelSolver {
   NoiseScales noiseScales(const Eigen::Isometry3d& T) const {
     std::vector<float> photo, depth;  // |residual|; |point-to-plane residual| / z^2 / sqrt(2)
     const bool measure_depth = m_p.clean_depth_fraction > 0 && m_p.geometric_weight > 0;
-    photo.reserve(m_points.size() / kScaleSampleStep + 1);
-    if (measure_depth) depth.reserve(m_geometric_points / kScaleSampleStep + 1);
+    const std::size_t step = m_geometric_points >= kSampledLevel ? kScaleSampleStep : 1;
+    photo.reserve(m_points.size() / step + 1);
+    if (measure_depth) depth.reserve(m_geometric_points / step + 1);
     forEachPair(
         T,
         [&](const Eigen::Vector3d& P, double iz, double u, double v, int ui, int vi, float zr,
@@ -168,7 +172,7 @@ class LevelSolver {
             depth.push_back(
                 static_cast<float>(std::abs(plane->distance) * iz * iz / std::sqrt(2.0)));
         },
-        kScaleSampleStep);
+        step);
     NoiseScales s;
     s.photometric = photo.empty() ? 1 : std::max(1.0, 1.4826 * median(photo));
     s.depth_noise = m_p.depth_noise;
@@ -289,7 +293,7 @@ Eigen::Isometry3d expSe3(const Vector6d& d) {
 }
 
 // Gauss-Newton at one level from T; returns the last evaluation: at the returned T, or one
-// converged step (under 1e-4) before it.
+// converged step (under converged_px) before it.
 NormalEquations solveLevel(LevelSolver& solver, Eigen::Isometry3d& T, const DenseParams& p,
                            int& iterations, NoiseScales& scales) {
   solver.startAt(T);

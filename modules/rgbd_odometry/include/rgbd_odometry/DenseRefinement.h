@@ -38,11 +38,12 @@ struct DenseParams : public Params<DenseParams> {
   int geometric_stride = 2;
   /** [1/m] Kinect depth noise sigma = depth_noise * z^2 (Khoshelham & Elberink 2012: ~1.4e-3). */
   double depth_noise = 0.0015;
-  /** When the point-to-plane residuals' scale at a level's start (from at least 100 pairs) is
-   * below this share of depth_noise, the depth is far cleaner than a Kinect's (a render) and that
-   * scale replaces the model's (never below 1/50 of it), so that the exact term is not outweighed
-   * by the intensity term and its biases at depth edges. At the finest level real Kinect frames
-   * measured 0.38-1.6 of the model (other sensors: not measured). 0 = always the model. */
+  /** When the point-to-plane residuals' scale at a level's start (from at least 100 pairs, sampled
+   * on large levels) is below this share of depth_noise, the depth is far cleaner than a Kinect's
+   * (a render) and that scale replaces the model's (never below 1/50 of it), so that the exact term
+   * is not outweighed by the intensity term and its biases at depth edges. At the finest level real
+   * Kinect frames measured 0.38-1.6 of the model (other sensors: not measured). 0 = always the
+   * model. */
   double clean_depth_fraction = 0.25;
   double max_depth = 5.0;  //!< [m] farther depth is not used
   /** [m] a warped point this far from the reference depth is occluded or disoccluded: left out */
@@ -69,7 +70,8 @@ struct DenseParams : public Params<DenseParams> {
     HRGBD_PARAM(levels, "pyramid levels, each half the size", Range::closed(1, 8));
     HRGBD_PARAM(finest_level, "0 = full resolution, 1 = half, ...", Range::closed(0, 7));
     HRGBD_PARAM(iterations, "most Gauss-Newton steps per level", Range::atLeast(1));
-    HRGBD_PARAM(converged_px, "[px] a smaller step at its level ends the level", Range::above(0));
+    HRGBD_PARAM(converged_px, "[px] a smaller step at its level ends the level",
+                Range::openClosed(0, 1));
     HRGBD_PARAM(photometric_weight, "weight of the intensity term (0 = off)", Range::atLeast(0));
     HRGBD_PARAM(geometric_weight, "weight of the point-to-plane term (0 = off)", Range::atLeast(0));
     HRGBD_PARAM(geometric_stride, "point-to-plane term on every n-th row and column (finest level)",
@@ -153,9 +155,9 @@ struct DenseResult {
 /** Refines a motion (current -> reference) by minimising the joint cost, coarse to fine. Each of
  * `starts` is refined level by level and the one that fits best at the finest level wins (most
  * points paired with small residuals): a wrong sparse estimate loses against the motion
- * prediction. A start that a coarser level brings next to an earlier one (0.5 mm, 0.03 deg) is
- * dropped there: the earlier one goes on alone. Not ok (T = starts[0]) when the winner has fewer
- * than min_pixels pairs in all. */
+ * prediction. A start that a coarser level brings next to an earlier one (within two converged
+ * steps, converged_px) is dropped there: the earlier one goes on alone. Not ok (T = starts[0]) when
+ * the winner has fewer than min_pixels pairs in all, or when the reference has no derivatives. */
 DenseResult refineDense(const DensePyramid& cur, const DensePyramid& ref,
                         const std::vector<Eigen::Isometry3d>& starts, const DenseParams& params,
                         const ReadoutMotion& cur_readout = ReadoutMotion::Zero(),
