@@ -103,6 +103,15 @@ void dropDerivatives(DenseLevel& level) {
 
 bool hasDerivatives(const DenseLevel& level) { return !level.gx.empty(); }
 
+void addDerivatives(DensePyramid& pyramid, const DenseParams& params) {
+  for (auto& level : pyramid.levels)
+    if (!hasDerivatives(level)) addDerivatives(level, params);
+}
+
+void dropDerivatives(DensePyramid& pyramid) {
+  for (auto& level : pyramid.levels) dropDerivatives(level);
+}
+
 DensePyramid buildDensePyramid(const RgbdImage& image, const DenseParams& params,
                                bool derivatives) {
   DenseLevel level;

@@ -1,5 +1,6 @@
 #include <mrpt/core/bits_math.h>
 
+#include "rgbd_core/PoseGap.h"
 #include "rgbd_core/Timing.h"
 #include "rgbd_odometry/FeatureRegistration.h"
 
@@ -8,9 +9,8 @@ namespace {
 
 // Whether b is within `metres` and `deg` of a.
 bool near(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b, double metres, double deg) {
-  const Eigen::Isometry3d d = a.inverse() * b;
-  return d.translation().norm() <= metres &&
-         mrpt::RAD2DEG(Eigen::AngleAxisd(d.rotation()).angle()) <= deg;
+  const PoseGap g = poseGap(a, b);
+  return g.metres <= metres && mrpt::RAD2DEG(g.radians) <= deg;
 }
 
 }  // namespace
@@ -46,8 +46,7 @@ RegistrationResult DenseRefined::align(Frame& cur, Frame& ref) {
     ref_readout = *ref.velocity * readout;
   }
   const DenseResult d = timed(r.seen.ms.refine, [&] {
-    for (auto& level : ref.dense->levels)
-      if (!hasDerivatives(level)) addDerivatives(level, m_params);
+    addDerivatives(*ref.dense, m_params);  // on its first use as a reference
     return refineDense(*cur.dense, *ref.dense, starts, m_params, cur_readout, ref_readout);
   });
   if (!d.ok) {

@@ -43,8 +43,7 @@ std::shared_ptr<Frame> keptForLoops(const Frame& keyframe) {
   f->guess.reset();
   f->peer.reset();
   if (f->orb || f->geometric) f->image.grey.release(), f->image.depth.release();
-  if (f->dense)
-    for (auto& level : f->dense->levels) dropDerivatives(level);
+  if (f->dense) dropDerivatives(*f->dense);
   return f;
 }
 

@@ -136,6 +136,10 @@ void addDerivatives(DenseLevel& level, const DenseParams& params);
 void dropDerivatives(DenseLevel& level);
 /** Whether the level has what addDerivatives() adds. */
 bool hasDerivatives(const DenseLevel& level);
+/** addDerivatives() on every level of `pyramid` that has none. */
+void addDerivatives(DensePyramid& pyramid, const DenseParams& params);
+/** dropDerivatives() on every level. */
+void dropDerivatives(DensePyramid& pyramid);
 
 /** Result of refineDense(). */
 struct DenseResult {
