@@ -147,6 +147,25 @@ TEST(DenseRefinement, OnlyTheReferenceNeedsItsDerivatives) {
   EXPECT_EQ(lazy.iterations, eager.iterations);
 }
 
+// The refinement reads a reference's grey levels and gradients from one interleaved image: it
+// holds the level's own values, and goes with the other derivatives.
+TEST(DenseRefinement, TheReferenceSamplesAreItsGreyAndGradients) {
+  auto pair = renderPair("desk", kMotion);
+  for (auto& level : pair.ref.levels) {
+    ASSERT_EQ(level.samples.type(), CV_32FC4);
+    ASSERT_EQ(level.samples.size(), level.grey.size());
+    std::vector<cv::Mat> ch;
+    cv::split(level.samples, ch);
+    EXPECT_EQ(cv::norm(ch[0], level.grey, cv::NORM_INF), 0);
+    EXPECT_EQ(cv::norm(ch[1], level.gx, cv::NORM_INF), 0);
+    EXPECT_EQ(cv::norm(ch[2], level.gy, cv::NORM_INF), 0);
+    EXPECT_EQ(cv::countNonZero(ch[3]), 0);
+    EXPECT_GT(cv::norm(level.gx, cv::NORM_INF), 0);  // a textured render: not all zero
+    hrgbd::dropDerivatives(level);
+    EXPECT_TRUE(level.samples.empty());
+  }
+}
+
 TEST(DenseRefinement, NothingToRefineWithIsNotOk) {
   auto pair = renderPair("desk", kMotion);
   for (auto& level : pair.cur.levels) level.depth.setTo(std::nanf(""));  // no depth at all

@@ -11,23 +11,31 @@
 namespace hrgbd::dense {
 namespace {
 
-// Bilinear sampling at (u, v), inside [0, cols - 1) x [0, rows - 1), of images of one size:
-// the cell and weights are found once for the intensity and both gradients. Taken in double and
-// clamped: u = 638.99999999 rounded to float is 639, one past the last 2x2 cell
-// (AddressSanitizer found it).
-struct Bilinear {
-  Bilinear(const cv::Mat& m, double u, double v)
-      : u0(std::min(static_cast<int>(u), m.cols - 2)),
-        v0(std::min(static_cast<int>(v), m.rows - 2)),
+// The reference's 2x2 cell holding (u, v), inside [0, cols - 1) x [0, rows - 1), read from its
+// interleaved (grey, gx, gy, 0) samples, and its pixel nearest to (u, v). Cell in double and
+// clamped: u = 638.99999999 rounded to float is 639, one
+// past the last 2x2 cell (AddressSanitizer found it).
+struct Cell {
+  Cell(const cv::Mat& samples, double u, double v)
+      : u0(std::min(static_cast<int>(u), samples.cols - 2)),
+        v0(std::min(static_cast<int>(v), samples.rows - 2)),
+        right(u - u0 >= 0.5),
+        down(v - v0 >= 0.5),
         a(static_cast<float>(u - u0)),
-        b(static_cast<float>(v - v0)) {}
-  float operator()(const cv::Mat& m) const {
-    const float* r0 = m.ptr<float>(v0) + u0;
-    const float* r1 = m.ptr<float>(v0 + 1) + u0;
-    return (1 - b) * ((1 - a) * r0[0] + a * r0[1]) + b * ((1 - a) * r1[0] + a * r1[1]);
+        b(static_cast<float>(v - v0)),
+        r0(samples.ptr<float>(v0) + 4 * u0),
+        r1(samples.ptr<float>(v0 + 1) + 4 * u0) {}
+  int ui() const { return u0 + right; }  //!< the nearest pixel
+  int vi() const { return v0 + down; }
+  /** (grey, gx, gy, 0), bilinear at (u, v) */
+  Eigen::Array4f bilinear() const {
+    using A = Eigen::Map<const Eigen::Array4f>;
+    return (1 - b) * ((1 - a) * A(r0) + a * A(r0 + 4)) + b * ((1 - a) * A(r1) + a * A(r1 + 4));
   }
   int u0, v0;
+  bool right, down;
   float a, b;
+  const float *r0, *r1;
 };
 
 // Jacobian of a residual whose derivative with respect to the moved point P is g, for a left
@@ -86,6 +94,40 @@ constexpr std::size_t kMinDepthPairs = 100;
 constexpr std::size_t kScaleSampleStep = 4;
 constexpr std::size_t kSampledLevel = 40 * kMinDepthPairs;
 
+// Sums w [J r]^T [J r] over the residuals of an evaluation: the lower triangle of a 7x7 whose
+// top-left 6x6 is H and whose last row is b^T. Each residual's sqrt(w) [J r] is kept in float in
+// blocks of kBlock, whose 28 products are summed over 8 independent float lanes (the loops the
+// compiler turns into SIMD) and added to the double sums block by block.
+class Accumulator {
+ public:
+  void add(const Vector6d& J, double r, double w) {
+    const float s = static_cast<float>(std::sqrt(w));
+    for (int i = 0; i < 6; ++i) m_a[i][m_n] = s * static_cast<float>(J[i]);
+    m_a[6][m_n] = s * static_cast<float>(r);
+    if (++m_n == kBlock) flush();
+  }
+  void flush() {
+    for (int i = 0; i < 7; ++i)
+      for (int k = m_n; k < (m_n + kLanes - 1) / kLanes * kLanes; ++k) m_a[i][k] = 0;
+    for (int i = 0; i < 7; ++i)
+      for (int j = 0; j <= i; ++j) {
+        float lanes[kLanes] = {};
+        for (int k = 0; k < m_n; k += kLanes)
+          for (int l = 0; l < kLanes; ++l) lanes[l] += m_a[i][k + l] * m_a[j][k + l];
+        double sum = 0;
+        for (float x : lanes) sum += x;
+        S(i, j) += sum;
+      }
+    m_n = 0;
+  }
+  Eigen::Matrix<double, 7, 7> S = Eigen::Matrix<double, 7, 7>::Zero();
+
+ private:
+  static constexpr int kBlock = 256, kLanes = 8;
+  alignas(16) float m_a[7][kBlock];
+  int m_n = 0;
+};
+
 }  // namespace
 
 LevelSolver::LevelSolver(const DenseLevel& cur, const DenseLevel& ref, const DenseParams& p,
@@ -112,9 +154,9 @@ inline std::optional<LevelSolver::TangentPlane> LevelSolver::tangentPlane(const 
   return TangentPlane{n, n.dot(P - m_ref.cam.backProject(ui, vi, zr))};
 }
 
-// Calls f(P, 1 / P.z, u, v, ui, vi, z_ref, grey, geometric) for every `step`-th current point
-// that T moves into the reference image without landing in front of or behind the reference
-// depth (occlusion gate; unknown reference depth passes, for the photometric term).
+// Calls f(P, 1 / P.z, cell, z_ref, grey, geometric) for every `step`-th current point that T moves
+// into the reference image without landing in front of or behind the reference depth (occlusion
+// gate; unknown reference depth passes, for the photometric term).
 template <class F>
 void LevelSolver::forEachPair(const Eigen::Isometry3d& T, F f, std::size_t step) const {
   const auto& c = m_ref.cam;
@@ -125,10 +167,10 @@ void LevelSolver::forEachPair(const Eigen::Isometry3d& T, F f, std::size_t step)
     const double iz = 1 / P.z();
     const double u = c.fx * P.x() * iz + c.cx, v = c.fy * P.y() * iz + c.cy;
     if (!(u >= 0 && v >= 0 && u < c.width - 1 && v < c.height - 1)) continue;
-    const int ui = static_cast<int>(u + 0.5), vi = static_cast<int>(v + 0.5);
-    const float zr = m_ref.depth.at<float>(vi, ui);
+    const Cell cell(m_ref.samples, u, v);
+    const float zr = m_ref.depth.at<float>(cell.vi(), cell.ui());
     if (std::abs(zr - P.z()) > m_p.max_depth_difference) continue;  // false for NaN
-    f(P, iz, u, v, ui, vi, zr, pt.grey, pt.geometric);
+    f(P, iz, cell, zr, pt.grey, pt.geometric);
   }
 }
 
@@ -162,11 +204,11 @@ NoiseScales LevelSolver::noiseScales(const Eigen::Isometry3d& T) const {
   if (measure_depth) depth.reserve(m_geometric_points / step + 1);
   forEachPair(
       T,
-      [&](const Eigen::Vector3d& P, double iz, double u, double v, int ui, int vi, float zr,
-          float grey, bool geometric) {
-        photo.push_back(std::abs(Bilinear(m_ref.grey, u, v)(m_ref.grey) - grey));
+      [&](const Eigen::Vector3d& P, double iz, const Cell& cell, float zr, float grey,
+          bool geometric) {
+        photo.push_back(std::abs(cell.bilinear()[0] - grey));
         if (!measure_depth || !geometric) return;
-        if (const auto plane = tangentPlane(P, ui, vi, zr))
+        if (const auto plane = tangentPlane(P, cell.ui(), cell.vi(), zr))
           depth.push_back(static_cast<float>(std::abs(plane->distance) * iz * iz / std::sqrt(2.0)));
       },
       step);
@@ -186,16 +228,12 @@ NormalEquations LevelSolver::normalEquations(const Eigen::Isometry3d& T,
                                              const NoiseScales& scales) const {
   NormalEquations n;
   const double k = m_p.huber, cap = 2.5 * k * k;  // Huber cost at e = 3k
+  Accumulator sums;
   // inv_sigma: 1 / the residual's noise sigma
   auto add = [&](const Vector6d& J, double r, double inv_sigma, double weight) {
     const double e = std::abs(r) * inv_sigma;
     const double w = weight * (e <= k ? 1 : k / e) * inv_sigma * inv_sigma;
-    // the lower triangle only (H is symmetric; completed below)
-    for (int j = 0; j < 6; ++j) {
-      const double wj = w * J[j];
-      for (int i = j; i < 6; ++i) n.H(i, j) += wj * J[i];
-      n.b[j] += wj * r;
-    }
+    sums.add(J, r, w);
     const double rho = e <= k ? 0.5 * e * e : k * (e - 0.5 * k);
     n.cost += weight * rho;
     n.score += std::min(rho, cap);
@@ -204,21 +242,21 @@ NormalEquations LevelSolver::normalEquations(const Eigen::Isometry3d& T,
   const double inv_photo_sigma = 1 / scales.photometric;
   // 1 / the sigma of a point-to-plane residual at 1 m (below)
   const double inv_depth_sigma = 1 / (std::sqrt(2.0) * scales.depth_noise);
-  forEachPair(T, [&](const Eigen::Vector3d& P, double iz, double u, double v, int ui, int vi,
-                     float zr, float grey, bool geometric) {
-    const Bilinear at(m_ref.grey, u, v);
+  forEachPair(T, [&](const Eigen::Vector3d& P, double iz, const Cell& cell, float zr, float grey,
+                     bool geometric) {
     if (m_p.photometric_weight > 0 &&
-        (!m_skip_untextured || m_ref.textured.at<uchar>(at.v0, at.u0))) {
-      const double gx = at(m_ref.gx), gy = at(m_ref.gy);
+        (!m_skip_untextured || m_ref.textured.at<uchar>(cell.v0, cell.u0))) {
+      const Eigen::Array4f at = cell.bilinear();
+      const double gx = at[1], gy = at[2];
       if (gx * gx + gy * gy >= m_p.min_gradient * m_p.min_gradient) {
         const Eigen::Vector3d g(gx * c.fx * iz, gy * c.fy * iz,
                                 -(gx * c.fx * P.x() + gy * c.fy * P.y()) * iz * iz);
-        add(jacobian(P, g), at(m_ref.grey) - grey, inv_photo_sigma, m_p.photometric_weight);
+        add(jacobian(P, g), at[0] - grey, inv_photo_sigma, m_p.photometric_weight);
         ++n.photometric;
       }
     }
     if (m_p.geometric_weight <= 0 || !geometric) return;
-    const auto plane = tangentPlane(P, ui, vi, zr);
+    const auto plane = tangentPlane(P, cell.ui(), cell.vi(), zr);
     if (!plane) return;
     // both depths are noisy: the sigma of the difference of two readings at about this depth
     const double inv_sigma = iz * iz * inv_depth_sigma;
@@ -226,7 +264,9 @@ NormalEquations LevelSolver::normalEquations(const Eigen::Isometry3d& T,
     ++n.geometric;
     n.normals.noalias() += plane->normal * plane->normal.transpose();
   });
-  n.H = n.H.selfadjointView<Eigen::Lower>();
+  sums.flush();
+  n.H = sums.S.topLeftCorner<6, 6>().selfadjointView<Eigen::Lower>();
+  n.b = sums.S.block<1, 6>(6, 0).transpose();
   const std::size_t pairs = n.photometric + n.geometric;
   const std::size_t slots = (m_p.photometric_weight > 0 ? m_points.size() : 0) +
                             (m_p.geometric_weight > 0 ? m_geometric_points : 0);

@@ -95,10 +95,14 @@ void addDerivatives(DenseLevel& level, const DenseParams& params) {
   level.textured = texturedCells(level.gx, level.gy, params.min_gradient);
   level.textured_gradient = params.min_gradient;
   level.normals = depthNormals(level.depth, level.cam, params.max_depth_difference);
+  cv::merge(std::vector<cv::Mat>{level.grey, level.gx, level.gy,
+                                 cv::Mat::zeros(level.grey.size(), CV_32F)},
+            level.samples);
 }
 
 void dropDerivatives(DenseLevel& level) {
   level.gx.release(), level.gy.release(), level.normals.release(), level.textured.release();
+  level.samples.release();
 }
 
 bool hasDerivatives(const DenseLevel& level) { return !level.gx.empty(); }

@@ -63,7 +63,7 @@ std::size_t keptBytes(const Frame& f) {
   if (f.dense)
     for (const auto& l : f.dense->levels)
       n += bytes(l.grey) + bytes(l.depth) + bytes(l.gx) + bytes(l.gy) + bytes(l.normals) +
-           bytes(l.textured);
+           bytes(l.textured) + bytes(l.samples);
   return n;
 }
 

@@ -112,6 +112,10 @@ struct DenseLevel {
    * the gradient reaches it, and the refinement skips the cell (a shortcut, the same result) */
   cv::Mat textured;
   double textured_gradient = 0;  //!< [grey levels/px] the min_gradient it was made with
+  /** CV_32FC4, (grey, gx, gy, 0) of each pixel side by side, made with the derivatives: the
+   * refinement reads a reference's 2x2 cell as 4 vectors of 16 bytes, not 12 scattered floats
+   * (the depth stays apart: most pairs read only the depth, from the smaller image) */
+  cv::Mat samples;
 };
 
 /** Levels from the finest used (index 0) to the coarsest. */
