@@ -148,21 +148,37 @@ TEST(DenseRefinement, OnlyTheReferenceNeedsItsDerivatives) {
 }
 
 // The refinement reads a reference's grey levels and gradients from one interleaved image: it
-// holds the level's own values, and goes with the other derivatives.
+// holds the level's own grey and central differences, is made anew (never written into a copy's
+// buffer: the SLAM module keeps copies of pyramids), and goes with the other derivatives.
 TEST(DenseRefinement, TheReferenceSamplesAreItsGreyAndGradients) {
   auto pair = renderPair("desk", kMotion);
+  const hrgbd::DenseParams p;
   for (auto& level : pair.ref.levels) {
     ASSERT_EQ(level.samples.type(), CV_32FC4);
     ASSERT_EQ(level.samples.size(), level.grey.size());
-    std::vector<cv::Mat> ch;
-    cv::split(level.samples, ch);
-    EXPECT_EQ(cv::norm(ch[0], level.grey, cv::NORM_INF), 0);
-    EXPECT_EQ(cv::norm(ch[1], level.gx, cv::NORM_INF), 0);
-    EXPECT_EQ(cv::norm(ch[2], level.gy, cv::NORM_INF), 0);
-    EXPECT_EQ(cv::countNonZero(ch[3]), 0);
-    EXPECT_GT(cv::norm(level.gx, cv::NORM_INF), 0);  // a textured render: not all zero
+    const cv::Mat& g = level.grey;
+    double strongest = 0;
+    for (int v = 1; v + 1 < g.rows; ++v)
+      for (int u = 1; u + 1 < g.cols; ++u) {
+        const cv::Vec4f s = level.samples.at<cv::Vec4f>(v, u);
+        const float gx = (g.at<float>(v, u + 1) - g.at<float>(v, u - 1)) / 2,
+                    gy = (g.at<float>(v + 1, u) - g.at<float>(v - 1, u)) / 2;
+        ASSERT_EQ(s[0], g.at<float>(v, u)) << u << ", " << v;
+        ASSERT_NEAR(s[1], gx, 1e-4) << u << ", " << v;
+        ASSERT_NEAR(s[2], gy, 1e-4) << u << ", " << v;
+        ASSERT_EQ(s[3], 0);
+        strongest = std::max<double>(strongest, std::abs(gx) + std::abs(gy));
+      }
+    EXPECT_GT(strongest, 10);              // a textured render: gradients to compare
+    const hrgbd::DenseLevel copy = level;  // shares the buffers
+    const cv::Mat before = copy.samples.clone();
+    level.grey = level.grey + 1;  // new data
+    hrgbd::addDerivatives(level, p);
+    EXPECT_EQ(cv::norm(copy.samples, before, cv::NORM_INF), 0);
+    EXPECT_EQ(level.samples.at<cv::Vec4f>(1, 1)[0], copy.samples.at<cv::Vec4f>(1, 1)[0] + 1);
     hrgbd::dropDerivatives(level);
     EXPECT_TRUE(level.samples.empty());
+    EXPECT_FALSE(hrgbd::hasDerivatives(level));
   }
 }
 
@@ -286,12 +302,12 @@ TEST(DenseRefinement, SkippingUntexturedCellsChangesNothing) {
   // of 0.01 % for rounding), and only then
   const double t2 = p.min_gradient * p.min_gradient;
   for (const auto& l : pair.ref.levels)
-    for (int v = 0; v + 1 < l.gx.rows; ++v)
-      for (int u = 0; u + 1 < l.gx.cols; ++u) {
+    for (int v = 0; v + 1 < l.grey.rows; ++v)
+      for (int u = 0; u + 1 < l.grey.cols; ++u) {
         double strongest = 0;
         for (int k = 0; k < 4; ++k) {
-          const double gx = l.gx.at<float>(v + k / 2, u + k % 2),
-                       gy = l.gy.at<float>(v + k / 2, u + k % 2);
+          const cv::Vec4f s = l.samples.at<cv::Vec4f>(v + k / 2, u + k % 2);  // grey, gx, gy
+          const double gx = s[1], gy = s[2];
           strongest = std::max(strongest, gx * gx + gy * gy);
         }
         const bool textured = l.textured.at<uchar>(v, u) != 0;

@@ -12,9 +12,9 @@ namespace hrgbd::dense {
 namespace {
 
 // The reference's 2x2 cell holding (u, v), inside [0, cols - 1) x [0, rows - 1), read from its
-// interleaved (grey, gx, gy, 0) samples, and its pixel nearest to (u, v). Cell in double and
-// clamped: u = 638.99999999 rounded to float is 639, one
-// past the last 2x2 cell (AddressSanitizer found it).
+// interleaved (grey, gx, gy, 0) samples, and its pixel nearest to (u, v). The cell is found in
+// double (u = 638.99999999 rounded to float was 639, one past the last 2x2 cell: AddressSanitizer
+// found it) and clamped as well.
 struct Cell {
   Cell(const cv::Mat& samples, double u, double v)
       : u0(std::min(static_cast<int>(u), samples.cols - 2)),

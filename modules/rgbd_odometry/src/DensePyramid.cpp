@@ -89,23 +89,23 @@ void DenseParams::checkTogether(const std::string& section) const {
 }
 
 void addDerivatives(DenseLevel& level, const DenseParams& params) {
-  level.gx.release(), level.gy.release();                 // new data: never written into a copy's
-  cv::Sobel(level.grey, level.gx, CV_32F, 1, 0, 1, 0.5);  // central differences
-  cv::Sobel(level.grey, level.gy, CV_32F, 0, 1, 1, 0.5);
-  level.textured = texturedCells(level.gx, level.gy, params.min_gradient);
+  cv::Mat gx, gy;
+  cv::Sobel(level.grey, gx, CV_32F, 1, 0, 1, 0.5);  // central differences
+  cv::Sobel(level.grey, gy, CV_32F, 0, 1, 1, 0.5);
+  level.textured = texturedCells(gx, gy, params.min_gradient);
   level.textured_gradient = params.min_gradient;
   level.normals = depthNormals(level.depth, level.cam, params.max_depth_difference);
-  cv::merge(std::vector<cv::Mat>{level.grey, level.gx, level.gy,
-                                 cv::Mat::zeros(level.grey.size(), CV_32F)},
-            level.samples);
+  cv::Mat samples;  // new data: never written into a copy's
+  cv::merge(std::vector<cv::Mat>{level.grey, gx, gy, cv::Mat::zeros(level.grey.size(), CV_32F)},
+            samples);
+  level.samples = samples;
 }
 
 void dropDerivatives(DenseLevel& level) {
-  level.gx.release(), level.gy.release(), level.normals.release(), level.textured.release();
-  level.samples.release();
+  level.samples.release(), level.normals.release(), level.textured.release();
 }
 
-bool hasDerivatives(const DenseLevel& level) { return !level.gx.empty(); }
+bool hasDerivatives(const DenseLevel& level) { return !level.samples.empty(); }
 
 void addDerivatives(DensePyramid& pyramid, const DenseParams& params) {
   for (auto& level : pyramid.levels)

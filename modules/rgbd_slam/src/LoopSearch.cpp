@@ -15,7 +15,7 @@ using slam::kLever;
 using slam::viewDistance;
 
 namespace {
-constexpr std::size_t kReferences = 8;  //!< keyframes kept as references: 2-3 MB each
+constexpr std::size_t kReferences = 8;  //!< keyframes kept as references: 3-4 MB each
 }  // namespace
 
 std::vector<KeyframeSlam::Candidate> KeyframeSlam::candidates(std::size_t id) const {

@@ -105,16 +105,16 @@ struct DenseLevel {
   PinholeCamera cam;
   cv::Mat grey;     //!< CV_32F, grey levels
   cv::Mat depth;    //!< CV_32F, metres, NaN = unknown
-  cv::Mat gx, gy;   //!< CV_32F, grey levels per pixel
   cv::Mat normals;  //!< CV_32FC3, unit, towards the camera; NaN = unknown
   /** CV_8U, non-zero where a corner of the 2x2 cell at (u, v)..(u + 1, v + 1) has a gradient
    * of at least `textured_gradient` (less 0.01 % for rounding): elsewhere no bilinear sample of
    * the gradient reaches it, and the refinement skips the cell (a shortcut, the same result) */
   cv::Mat textured;
   double textured_gradient = 0;  //!< [grey levels/px] the min_gradient it was made with
-  /** CV_32FC4, (grey, gx, gy, 0) of each pixel side by side, made with the derivatives: the
-   * refinement reads a reference's 2x2 cell as 4 vectors of 16 bytes, not 12 scattered floats
-   * (the depth stays apart: most pairs read only the depth, from the smaller image) */
+  /** CV_32FC4, (grey, gx, gy, 0) of each pixel side by side, gx and gy its intensity gradients
+   * [grey levels per pixel]: the refinement reads a reference's 2x2 cell as 4 vectors of 16
+   * bytes, not 12 scattered floats (the depth stays apart: most pairs read only the depth, from
+   * the smaller image) */
   cv::Mat samples;
 };
 
@@ -133,7 +133,7 @@ DensePyramid buildDensePyramid(const RgbdImage& image, const DenseParams& params
                                bool derivatives = true);
 
 /** Adds the level's gradients, textured cells and normals, made from its grey and depth. Only a
- * reference needs them: a pyramid stored for later use may drop them (72 % of its memory) and
+ * reference needs them: a pyramid stored for later use may drop them (78 % of its memory) and
  * have them added again when it becomes a reference. */
 void addDerivatives(DenseLevel& level, const DenseParams& params);
 /** Releases what addDerivatives() adds: the level keeps its camera, grey and depth. */

@@ -42,7 +42,7 @@ struct SlamStats {
   std::size_t largest_backlog = 0;  //!< most keyframes ever waiting for the loop search
   std::size_t backlog_waits = 0;    //!< times the tracking waited for it (max_backlog reached)
   /** what the kept keyframes hold (images, features, pyramids), counted as each is added; the
-   * references made from the last 8 (KeyframeSlam::reference()) come on top, 2-3 MB each */
+   * references made from the last 8 (KeyframeSlam::reference()) come on top, 3-4 MB each */
   std::size_t kept_bytes = 0;
   std::vector<double> search_ms;    //!< [ms] loop search and verification, per keyframe with
                                     //!< candidates
