@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <limits>
 #include <random>
 
 #include "DenseRenders.h"
@@ -180,6 +181,55 @@ TEST(DenseRefinement, TheReferenceSamplesAreItsGreyAndGradients) {
     EXPECT_TRUE(level.samples.empty());
     EXPECT_FALSE(hrgbd::hasDerivatives(level));
   }
+}
+
+// Depths in wrong units: a scene of micrometres is refined like the same scene in metres (the
+// normal equations' float sums hold it); one of nanometres overflows them, and the refinement
+// answers not ok instead of leaving its start in place as a result.
+TEST(DenseRefinement, AMicrometreSceneIsRefinedANanometreSceneRefused) {
+  for (const double k : {1e-6, 1e-9}) {
+    auto pair = renderPair("desk", kMotion);
+    hrgbd::DenseParams p;
+    p.max_depth_difference *= k;
+    for (auto* pyramid : {&pair.cur, &pair.ref})
+      for (auto& level : pyramid->levels) {
+        level.depth = level.depth * k;  // new data
+        hrgbd::dropDerivatives(level);
+        hrgbd::addDerivatives(level, p);
+      }
+    Isometry3d truth = pair.truth;
+    truth.translation() *= k;
+    const Isometry3d start = perturbed(truth, 0.01 * k, 1.0);
+    const auto d = hrgbd::refineDense(pair.cur, pair.ref, {start}, p);
+    if (k == 1e-9) {
+      EXPECT_FALSE(d.ok);
+      EXPECT_NE(d.detail.find("not finite"), std::string::npos) << d.detail;
+      continue;
+    }
+    ASSERT_TRUE(d.ok) << d.detail;
+    // (the start is 15 "mm" and 1.4 deg off; the depth noise model, sigma ~ z^2, is not
+    // scale-free, so this scene's point-to-plane term outweighs the intensity's)
+    const auto [t, r] = error(d.T, truth);
+    EXPECT_LT(t, 0.005 * k);
+    EXPECT_LT(r, 0.05);
+  }
+}
+
+// Normal equations that are not finite (here infinite grey levels in a block of the reference's
+// samples: their residuals' Huber weights are 0, times infinity) give no step: the refinement
+// answers not ok, never its start as a result.
+TEST(DenseRefinement, NormalEquationsThatAreNotFiniteGiveNoResult) {
+  auto pair = renderPair("desk", kMotion);
+  for (auto& level : pair.ref.levels)  // a block: the noise scales (medians) stay finite
+    level
+        .samples(cv::Rect(level.samples.cols / 4, level.samples.rows / 4, level.samples.cols / 4,
+                          level.samples.rows / 4))
+        .setTo(cv::Scalar(std::numeric_limits<float>::infinity(), 100, 100, 0));
+  const Isometry3d start = perturbed(pair.truth, 0.01, 1.0);
+  const auto d = hrgbd::refineDense(pair.cur, pair.ref, {start}, hrgbd::DenseParams());
+  EXPECT_FALSE(d.ok);
+  EXPECT_NE(d.detail.find("not finite"), std::string::npos) << d.detail;
+  EXPECT_TRUE(d.T.isApprox(start));
 }
 
 TEST(DenseRefinement, NothingToRefineWithIsNotOk) {

@@ -115,6 +115,7 @@ DenseResult refineDense(const DensePyramid& cur, const DensePyramid& ref,
   for (std::size_t i = 0; i < refined.size(); ++i) {
     const auto& [start, Ti, n0, scales, finest_start] = refined[i];
     NormalEquations n = n0;
+    if (!n.H.allFinite() || !n.b.allFinite()) continue;  // no step could be taken there
     if (scales.depth_noise < depth_noise) {
       solvers.front().startAt(finest_start);  // this start's rolling-shutter correction
       n = solvers.front().normalEquations(Ti, {scales.photometric, depth_noise});
@@ -127,6 +128,10 @@ DenseResult refineDense(const DensePyramid& cur, const DensePyramid& ref,
                             .eigenvalues()(0)
                       : 0;
     }
+  }
+  if (best == 1e300) {
+    out.detail = "dense refinement: its normal equations are not finite (depth out of range?)";
+    return out;
   }
   // pixels paired: each point-to-plane pair stands for geometric_stride^2 pixels
   const std::size_t stride2 = static_cast<std::size_t>(p.geometric_stride * p.geometric_stride);
