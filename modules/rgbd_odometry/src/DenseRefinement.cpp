@@ -6,6 +6,7 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "DenseLevelSolver.h"
 #include "rgbd_core/PoseGap.h"
@@ -110,7 +111,8 @@ DenseResult refineDense(const DensePyramid& cur, const DensePyramid& ref,
   // on the capped costs (a dropped start was where the one it joined is, with its scale)
   double depth_noise = 0;
   for (const auto& r : refined) depth_noise = std::max(depth_noise, r.scales.depth_noise);
-  double best = 1e300;
+  // the winner's score so far; none while infinite (scores are capped: a NaN never wins)
+  double best = std::numeric_limits<double>::infinity();
   Eigen::Isometry3d T = starts.front();
   for (std::size_t i = 0; i < refined.size(); ++i) {
     const auto& [start, Ti, n0, scales, finest_start] = refined[i];
@@ -129,7 +131,7 @@ DenseResult refineDense(const DensePyramid& cur, const DensePyramid& ref,
                       : 0;
     }
   }
-  if (best == 1e300) {
+  if (std::isinf(best)) {
     out.detail = "dense refinement: its normal equations are not finite (depth out of range?)";
     return out;
   }
