@@ -59,6 +59,16 @@ RegistrationResult DenseRefined::align(Frame& cur, Frame& ref) {
                 std::to_string(d.normal_spread) + ")";
     return r;
   }
+  if (!r.ok() && m_params.min_depth_agreement > 0) {
+    const double agreement = timed(
+        r.seen.ms.refine, [&] { return depthAgreement(*cur.dense, *ref.dense, d.T, m_params); });
+    if (agreement < m_params.min_depth_agreement) {
+      r.detail += "; dense: " + std::to_string(agreement) +
+                  " of the points agree with the reference depth (< min_depth_agreement): the "
+                  "motion found does not explain it";
+      return r;
+    }
+  }
   if (!near(starts[d.start], d.T, m_params.max_correction, m_params.max_correction_deg)) {
     r.status = FrameResult::Status::LargeResiduals;
     r.detail = "dense refinement moved the start too far: neither estimate is trusted";

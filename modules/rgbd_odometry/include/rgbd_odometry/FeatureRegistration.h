@@ -75,7 +75,10 @@ class HybridRegistration : public Registration {
 
 /** Any registration followed by the dense refinement (DenseRefinement.h), which starts from its
  * estimate, or from the tracker's prediction when it found none. A refinement that changes the
- * start by more than max_correction[_deg] is not trusted: the frame is flagged (LargeResiduals). */
+ * start by more than max_correction[_deg] is not trusted: the frame is flagged (LargeResiduals).
+ * A refinement alone (no estimate of the inner registration) must also see surfaces facing three
+ * directions where texture is scarce (min_normal_spread) and explain the reference's depth
+ * (min_depth_agreement), or the inner registration's failure stands. */
 class DenseRefined : public Registration {
  public:
   DenseRefined(std::unique_ptr<Registration> inner, const DenseParams& params);
