@@ -101,7 +101,7 @@ TEST(RealOdometry, Fr2PairRegistersWithSaneInliers) {
 // Frames out of order (an independent tester's shuffled teddy): frames 10 and 60 of teddy, 0.74 m
 // and 44 deg apart, given one after the other. The sparse fit fails, and the refinement from the
 // prediction (no motion) stopped 0.69 m and 44 deg from the truth, where it paired enough pixels:
-// accepted as a step of 0.08 m. Only 23 % of its points agree with the reference depth: flagged.
+// accepted as a step of 0.08 m. Only 19 % of its points agree with the reference depth: flagged.
 TEST(RealOdometry, TeddyFramesFarApartAreFlaggedNotRegistered) {
   HRGBD_REQUIRE_SHARED_DATA(data);
   const auto dir = data + "/real/tum_fr3_teddy_200frames/";

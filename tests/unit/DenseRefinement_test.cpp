@@ -2,9 +2,8 @@
 // and degrees off, a correct estimate left in place, exact depth weighted by its own scale and
 // Kinect-noisy depth by the model's, the better of two starts, starts that meet refined once, no
 // evaluation spent on a converged estimate, only the reference's derivatives used, and no
-// refinement without anything to refine with; a result of the prediction alone is no sparse fit,
-// and one that does not explain the reference's depth is refused.
-// The rolling shutter: DenseRollingShutter_test.cpp.
+// refinement without anything to refine with. The rolling shutter: DenseRollingShutter_test.cpp;
+// the refinement after a registration (DenseRefined): DenseRefined_test.cpp.
 #include "rgbd_odometry/DenseRefinement.h"
 
 #include <gtest/gtest.h>
@@ -282,81 +281,6 @@ TEST(DenseRefinement, TinyImagesGiveFewerLevelsAndNoRefinement) {
   const auto one = hrgbd::buildDensePyramid(f, p);
   ASSERT_EQ(one.levels.size(), 1u);
   EXPECT_FALSE(hrgbd::refineDense(one, one, {Isometry3d::Identity()}, p).ok);  // 9 < min_pixels
-}
-
-TEST(DenseRefined, AResultOfThePredictionAloneIsNotASparseFit) {
-  // The SLAM mode accepts a loop only on a sparse fit that succeeded: the refinement from the
-  // prediction alone must say that it is not one, though it registers.
-  const auto scene = hrgbd::sim::makeScene("desk", false);
-  const auto ref_pose = referencePose();
-  hrgbd::Frame cur, ref;
-  cur.image = render(scene, ref_pose + kMotion);
-  ref.image = render(scene, ref_pose);
-  const Isometry3d truth = hrgbd::toIsometry(kMotion);
-  for (const bool sparse : {false, true}) {
-    hrgbd::RegistrationResult s;
-    s.status = sparse ? hrgbd::FrameResult::Status::Ok : hrgbd::FrameResult::Status::TooFewMatches;
-    s.sparse_ok = sparse;
-    s.inliers = 150;  // a failed fit may still count inliers
-    s.T = perturbed(truth, 0.01, 1.0);
-    s.seen.path = "photometric";
-    hrgbd::DenseRefined dense(std::make_unique<ScriptedSparse>(s), hrgbd::DenseParams());
-    dense.prepare(cur);
-    dense.prepare(ref);
-    cur.guess = perturbed(truth, 0.02, -1.5);
-    const auto r = dense.align(cur, ref);
-    ASSERT_TRUE(r.ok()) << r.detail;
-    EXPECT_LT(error(r.T, truth).first, 0.002);
-    EXPECT_EQ(r.sparse_ok, sparse);
-    if (!sparse) {
-      EXPECT_EQ(r.seen.path, "dense");
-    }
-  }
-}
-
-// The depth check of a refinement alone: the motion that made the frames explains the
-// reference's depth, a motion 20 cm and 10 deg off does not, nor one that puts every point behind
-// the reference camera (none lands on known depth).
-TEST(DenseRefinement, TheDepthAgreesWithTheTrueMotionNotAWrongOne) {
-  const auto pair = renderPair("desk", kMotion);
-  const hrgbd::DenseParams p;
-  EXPECT_GT(hrgbd::depthAgreement(pair.cur, pair.ref, pair.truth, p), 0.95);
-  EXPECT_LT(hrgbd::depthAgreement(pair.cur, pair.ref, perturbed(pair.truth, 0.2, 10.0), p), 0.3);
-  Isometry3d behind = Isometry3d::Identity();
-  behind.translation().z() = -20;
-  EXPECT_EQ(hrgbd::depthAgreement(pair.cur, pair.ref, behind, p), 0.0);
-}
-
-// Frames out of order: 31 cm and 19 deg apart, no sparse fit, and the refinement from a
-// prediction of no motion stops in a local minimum next to it (measured 31 cm from the truth) that
-// pairs enough pixels but does not explain the reference's depth (6 % agree). Flagged, with the
-// reason; without the check (min_depth_agreement = 0) it was accepted.
-TEST(DenseRefined, ARefinementAloneThatDoesNotExplainTheDepthIsRefused) {
-  const auto scene = hrgbd::sim::makeScene("desk", false);
-  const auto ref_pose = referencePose();
-  const mrpt::poses::CPose3D far_apart(0.3, 0.03, 0.06, mrpt::DEG2RAD(18.0), mrpt::DEG2RAD(6.0), 0);
-  hrgbd::Frame cur, ref;
-  cur.image = render(scene, ref_pose + far_apart);
-  ref.image = render(scene, ref_pose);
-  hrgbd::RegistrationResult failed;
-  failed.status = hrgbd::FrameResult::Status::TooFewMatches;
-  for (const double min_agreement : {0.55, 0.0}) {
-    hrgbd::DenseParams p;
-    p.min_depth_agreement = min_agreement;
-    hrgbd::DenseRefined dense(std::make_unique<ScriptedSparse>(failed), p);
-    cur.dense.reset(), ref.dense.reset();
-    dense.prepare(cur);
-    dense.prepare(ref);
-    cur.guess = Isometry3d::Identity();
-    const auto r = dense.align(cur, ref);
-    if (min_agreement > 0) {
-      EXPECT_FALSE(r.ok());
-      EXPECT_NE(r.detail.find("agree with the reference depth"), std::string::npos) << r.detail;
-    } else {
-      ASSERT_TRUE(r.ok()) << r.detail;
-      EXPECT_GT(error(r.T, hrgbd::toIsometry(far_apart)).first, 0.1);  // and wrong
-    }
-  }
 }
 
 // A step below the convergence threshold (converged_px) is taken without an evaluation of

@@ -5,6 +5,7 @@
 #include <memory>
 #include <string>
 
+#include "rgbd_odometry/DepthAgreement.h"
 #include "rgbd_odometry/OdometryParams.h"
 #include "rgbd_odometry/Registration.h"
 
@@ -16,20 +17,13 @@ std::unique_ptr<Registration> makeOpenCvPeer(Method method);
 /** Open3D's open3d_color or open3d_hybrid (Open3dPeer.cpp). */
 std::unique_ptr<Registration> makeOpen3dPeer(Method method);
 
-/** How many points of the current frame, warped by T into the reference, land on a reference
- * depth that agrees with theirs (within kDepthAgreementTolerance of it); every `stride`-th pixel
- * in each direction is sampled. */
-struct DepthAgreement {
-  std::size_t compared = 0;  //!< warped points landing on a known reference depth
-  std::size_t agreeing = 0;  //!< of those, within the tolerance
-};
+/** The peers' plausibility check (DepthAgreement.h), on every 4th pixel: a current point agrees
+ * within kDepthAgreementTolerance of the reference depth. */
 constexpr double kDepthAgreementTolerance = 0.05;  //!< [fraction of the reference depth]
 /** Fewer agreeing among the compared: the peer's estimate is not plausible. Measured (4-pixel
  * grid, the peers' accepted estimates): 0.94 and more on fr3/teddy and fr1/desk, 0.46 on fr1/rpy,
  * 0.19 on the far-apart fr3/cabinet keyframes; frames of random noise 0.06. */
 constexpr double kMinDepthAgreement = 0.15;
-DepthAgreement depthAgreement(const RgbdImage& cur, const RgbdImage& ref,
-                              const Eigen::Isometry3d& T, int stride = 4);
 /** "" when the estimate passes the depth agreement check, else why not (for the detail). */
 std::string checkDepthAgreement(const RgbdImage& cur, const RgbdImage& ref,
                                 const Eigen::Isometry3d& T);

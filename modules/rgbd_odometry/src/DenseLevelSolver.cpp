@@ -277,22 +277,4 @@ NormalEquations LevelSolver::normalEquations(const Eigen::Isometry3d& T,
   return n;
 }
 
-double LevelSolver::depthAgreement(const Eigen::Isometry3d& T) const {
-  const auto& c = m_ref.cam;
-  const double k = 3 * std::sqrt(2.0) * m_p.depth_noise;  // 3 sigma at 1 m
-  std::size_t known = 0, agree = 0;
-  for (const auto& pt : m_points) {
-    const Eigen::Vector3d P = T * pt.at_reference_rows;
-    if (P.z() <= 0) continue;
-    const double u = c.fx * P.x() / P.z() + c.cx, v = c.fy * P.y() / P.z() + c.cy;
-    if (!(u >= 0 && v >= 0 && u < c.width - 1 && v < c.height - 1)) continue;
-    const Cell cell(m_ref.samples, u, v);
-    const float zr = m_ref.depth.at<float>(cell.vi(), cell.ui());
-    if (!std::isfinite(zr)) continue;
-    ++known;
-    if (std::abs(zr - P.z()) <= k * P.z() * P.z()) ++agree;
-  }
-  return known ? static_cast<double>(agree) / static_cast<double>(known) : 0;
-}
-
 }  // namespace hrgbd::dense

@@ -55,8 +55,6 @@ class LevelSolver {
   NoiseScales noiseScales(const Eigen::Isometry3d& T) const;
   /** The normal equations of the Huber-weighted, noise-normalised residuals at T. */
   NormalEquations normalEquations(const Eigen::Isometry3d& T, const NoiseScales& scales) const;
-  /** depthAgreement() of this level's points at T (DenseRefinement.h). */
-  double depthAgreement(const Eigen::Isometry3d& T) const;
 
  private:
   struct TangentPlane {

@@ -1,7 +1,12 @@
 #include <mrpt/core/bits_math.h>
 
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
 #include "rgbd_core/PoseGap.h"
 #include "rgbd_core/Timing.h"
+#include "rgbd_odometry/DepthAgreement.h"
 #include "rgbd_odometry/FeatureRegistration.h"
 
 namespace hrgbd {
@@ -59,13 +64,24 @@ RegistrationResult DenseRefined::align(Frame& cur, Frame& ref) {
                 std::to_string(d.normal_spread) + ")";
     return r;
   }
+  // a refinement alone must explain the reference's depth (every 2nd pixel: as many points as
+  // the default finest level's), within 3 sigma of the depth-noise model of two readings; where
+  // fewer than min_pixels points land on known reference depth (a keyframe without depth), there
+  // is nothing to judge by, and the intensity pairs stand
   if (!r.ok() && m_params.min_depth_agreement > 0) {
-    const double agreement = timed(
-        r.seen.ms.refine, [&] { return depthAgreement(*cur.dense, *ref.dense, d.T, m_params); });
-    if (agreement < m_params.min_depth_agreement) {
-      r.detail += "; dense: " + std::to_string(agreement) +
-                  " of the points agree with the reference depth (< min_depth_agreement): the "
-                  "motion found does not explain it";
+    const DepthTolerance within3sigma{0, 3 * std::sqrt(2.0) * m_params.depth_noise};
+    const DepthAgreement a = timed(r.seen.ms.refine, [&] {
+      return depthAgreement(cur.image, ref.image, d.T, within3sigma, 2);
+    });
+    const double agreement = a.share();
+    if (a.compared >= static_cast<std::size_t>(m_params.min_pixels) &&
+        agreement < m_params.min_depth_agreement) {
+      std::ostringstream why;
+      why << std::setprecision(2) << "; dense: " << agreement
+          << " of the points on known reference depth agree with the reference depth (< "
+             "min_depth_agreement "
+          << m_params.min_depth_agreement << "): the motion found does not explain it";
+      r.detail += why.str();
       return r;
     }
   }

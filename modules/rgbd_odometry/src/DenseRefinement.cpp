@@ -148,12 +148,4 @@ DenseResult refineDense(const DensePyramid& cur, const DensePyramid& ref,
   return out;
 }
 
-double depthAgreement(const DensePyramid& cur, const DensePyramid& ref, const Eigen::Isometry3d& T,
-                      const DenseParams& p) {
-  if (cur.levels.empty() || ref.levels.empty() || !hasDerivatives(ref.levels.front())) return 0;
-  const LevelSolver finest(cur.levels.front(), ref.levels.front(), p, 1, ReadoutMotion::Zero(),
-                           ReadoutMotion::Zero());
-  return finest.depthAgreement(T);
-}
-
 }  // namespace hrgbd

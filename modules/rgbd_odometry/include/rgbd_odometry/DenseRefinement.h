@@ -58,13 +58,15 @@ struct DenseParams : public Params<DenseParams> {
    * n n^T of its normals at least this. Measured: simulated plain wall 0.048 (noisy normals),
    * real plain structure 0.13, simulated structures 0.24-0.28. */
   double min_normal_spread = 0.1;
-  /** A frame registered by the refinement alone must explain the reference's depth: at least this
-   * share of its points that the motion moves onto known reference depth must agree with it
-   * within 3 sigma of the depth-noise model (depthAgreement()). Measured on correct motions: real
-   * frames 0.45-0.99 (fr1/rpy's fast rotation lowest; 0.67 its one frame registered by the
-   * refinement alone), simulated 0.68-0.99; on wrong ones (teddy shuffled, frames 0.1-1.3 m apart
-   * that the refinement from the prediction had accepted) 0.0-0.49. 0 = no check. */
-  double min_depth_agreement = 0.55;
+  /** A frame registered by the refinement alone (no sparse estimate) must explain the reference's
+   * depth: at least this share of its points (every 2nd pixel) that the motion moves onto known
+   * reference depth must agree with it within 3 sigma of the depth-noise model of two readings
+   * (DepthAgreement.h). Measured on correct motions: real frames 0.48-0.99 (fr1/rpy's fast rotation
+   * lowest; 0.63-0.98 on the 18 registered by the refinement alone), simulated 0.69-0.92; on wrong
+   * ones that the refinement from the prediction had accepted (teddy shuffled, frames 0.1-1.3 m
+   * apart) 0.00-0.32. Fewer than min_pixels points on known reference depth (a keyframe without
+   * depth): not judged. 0 = no check. */
+  double min_depth_agreement = 0.45;
   /** [ms] readout time of a rolling shutter, first row to last, of colour and depth alike; each
    * row's points are moved to the frame time (the middle row) with the camera's velocity.
    * 0 = a global shutter, unless the input knows its camera's (the playback then takes that:
@@ -180,14 +182,5 @@ DenseResult refineDense(const DensePyramid& cur, const DensePyramid& ref,
                         const std::vector<Eigen::Isometry3d>& starts, const DenseParams& params,
                         const ReadoutMotion& cur_readout = ReadoutMotion::Zero(),
                         const ReadoutMotion& ref_readout = ReadoutMotion::Zero());
-
-/** The share of the current frame's points (finest level, every pixel with depth) that T moves
- * onto known reference depth and whose depth there agrees with the reference's within 3 sigma of
- * the depth-noise model (sigma = sqrt(2) depth_noise z^2: two readings); 0 when none lands on
- * known depth. Occlusions and disocclusions lower it on a correct motion; a wrong motion that a
- * local minimum of the joint cost made plausible lowers it much further. (No rolling-shutter
- * correction: it moves a point by millimetres, well inside 3 sigma.) */
-double depthAgreement(const DensePyramid& cur, const DensePyramid& ref, const Eigen::Isometry3d& T,
-                      const DenseParams& params);
 
 }  // namespace hrgbd
