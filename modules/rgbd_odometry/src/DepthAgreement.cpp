@@ -1,5 +1,6 @@
 #include "rgbd_odometry/DepthAgreement.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace hrgbd {
@@ -8,6 +9,7 @@ DepthAgreement depthAgreement(const RgbdImage& cur, const RgbdImage& ref,
                               const Eigen::Isometry3d& T, const DepthTolerance& tolerance,
                               int stride) {
   DepthAgreement a;
+  stride = std::max(stride, 1);
   const auto& c = cur.cam;
   const auto& r = ref.cam;
   const Eigen::Matrix3f R = T.linear().cast<float>();

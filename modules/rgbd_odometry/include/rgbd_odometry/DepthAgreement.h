@@ -26,9 +26,9 @@ struct DepthAgreement {
   double share() const { return compared ? double(agreeing) / double(compared) : 0; }
 };
 
-/** Every `stride`-th pixel of `cur` in each direction with a depth is moved by T (current ->
- * reference, optical frames, pinhole) and compared with the reference depth at the nearest
- * pixel it lands on. */
+/** Every `stride`-th pixel (at least every one) of `cur` in each direction with a depth is moved by
+ * T (current -> reference, optical frames, pinhole) and compared with the reference depth at the
+ * nearest pixel it lands on. */
 DepthAgreement depthAgreement(const RgbdImage& cur, const RgbdImage& ref,
                               const Eigen::Isometry3d& T, const DepthTolerance& tolerance,
                               int stride);
