@@ -44,6 +44,15 @@ const Bound kBounds[] = {
     {"tum_fr3_teddy_200frames", "opencv_rgbd", 0.0214, 0.0245},
 };
 
+// The frame of a colour and a depth PNG (TUM's depth unit, 1/5000 m); null if either is missing.
+mrpt::obs::CObservation3DRangeScan::Ptr readFrame(const std::string& rgb, const std::string& depth,
+                                                  const mrpt::img::TCamera& cam, double t) {
+  const auto bgr = cv::imread(rgb, cv::IMREAD_COLOR);
+  const auto d = cv::imread(depth, cv::IMREAD_ANYDEPTH);
+  if (bgr.empty() || d.empty()) return nullptr;
+  return hrgbd::makeRgbdObservation(bgr, d, 1.0 / 5000, cam, t);
+}
+
 }  // namespace
 
 TEST(RealOdometry, AteWithinMeasuredBoundsForEveryMethod) {
@@ -85,10 +94,10 @@ TEST(RealOdometry, Fr2PairRegistersWithSaneInliers) {
   hrgbd::RgbdOdometry odo(p);
   hrgbd::FrameResult r;
   for (int i = 1; i <= 2; ++i) {
-    const auto bgr = cv::imread(dir + std::to_string(i) + ".png", cv::IMREAD_COLOR);
-    const auto depth = cv::imread(dir + std::to_string(i) + "_depth.png", cv::IMREAD_ANYDEPTH);
-    ASSERT_FALSE(bgr.empty() || depth.empty());
-    r = odo.processObservation(*hrgbd::makeRgbdObservation(bgr, depth, 1.0 / 5000, cam, i));
+    const auto obs =
+        readFrame(dir + std::to_string(i) + ".png", dir + std::to_string(i) + "_depth.png", cam, i);
+    ASSERT_TRUE(obs);
+    r = odo.processObservation(*obs);
   }
   ASSERT_EQ(r.status, hrgbd::FrameResult::Status::Ok) << r.detail;
   std::printf("fr2 pair: %zu features, %zu matches, %zu inliers, sigma %.4f m, step %.3f m\n",
@@ -111,16 +120,13 @@ TEST(RealOdometry, TeddyFramesFarApartAreFlaggedNotRegistered) {
     p.dense.min_depth_agreement = min_agreement;
     hrgbd::RgbdOdometry odo(p);
     hrgbd::FrameResult r;
-    int i = 0;
-    for (const auto* stamps : {"1341841873.605856 1341841873.605870",     // frame 10
-                               "1341841875.285981 1341841875.285994"}) {  // frame 60
-      std::istringstream s(stamps);
-      std::string rgb, depth;
-      s >> rgb >> depth;
-      const auto bgr = cv::imread(dir + "rgb/" + rgb + ".png", cv::IMREAD_COLOR);
-      const auto d = cv::imread(dir + "depth/" + depth + ".png", cv::IMREAD_ANYDEPTH);
-      ASSERT_FALSE(bgr.empty() || d.empty()) << rgb;
-      r = odo.processObservation(*hrgbd::makeRgbdObservation(bgr, d, 1.0 / 5000, cam, ++i / 30.0));
+    const char* frames[][2] = {{"1341841873.605856", "1341841873.605870"},   // frame 10
+                               {"1341841875.285981", "1341841875.285994"}};  // frame 60
+    for (int i = 0; i < 2; ++i) {
+      const auto obs = readFrame(dir + "rgb/" + frames[i][0] + ".png",
+                                 dir + "depth/" + frames[i][1] + ".png", cam, i / 30.0);
+      ASSERT_TRUE(obs) << frames[i][0];
+      r = odo.processObservation(*obs);
     }
     if (min_agreement > 0) {
       EXPECT_NE(r.status, hrgbd::FrameResult::Status::Ok);
