@@ -25,13 +25,17 @@ struct Frames {
   Isometry3d truth;
 };
 
-// `sparse` (scripted) and the dense refinement of the frames, from `guess` as the prediction.
+// `sparse` (scripted) and the dense refinement of the frames, from `guess` as the prediction;
+// `checked_depth`, when given, replaces the current frame's depth after its pyramid is made: the
+// depth check alone sees it.
 hrgbd::RegistrationResult refined(Frames& f, const hrgbd::RegistrationResult& sparse,
-                                  const Isometry3d& guess, const hrgbd::DenseParams& p = {}) {
+                                  const Isometry3d& guess, const hrgbd::DenseParams& p = {},
+                                  const cv::Mat& checked_depth = {}) {
   hrgbd::DenseRefined dense(std::make_unique<ScriptedSparse>(sparse), p);
   f.cur.dense.reset(), f.ref.dense.reset();
   dense.prepare(f.cur);
   dense.prepare(f.ref);
+  if (!checked_depth.empty()) f.cur.image.depth = checked_depth;
   f.cur.guess = guess;
   return dense.align(f.cur, f.ref);
 }
@@ -112,4 +116,54 @@ TEST(DenseRefined, AReferenceWithoutDepthIsNotJudgedByIt) {
   const auto r = refined(f, failedFit(), perturbed(f.truth, 0.005, 0.5));
   EXPECT_TRUE(r.ok()) << r.detail;
   EXPECT_EQ(r.detail.find("agree with the reference depth"), std::string::npos) << r.detail;
+}
+
+// Where the motion prediction's refinement fits better than the sparse fit's, the depth decides
+// too. Frames 31 cm and 19 deg apart, the sparse fit no motion (wrong) and the prediction near the
+// truth: the refinements end apart (the sparse fit's in a local minimum), and the prediction's
+// wins. The current frame's depth is then rendered again from three poses: the truth (the
+// prediction's refinement stands), where the sparse fit's refinement ended (that one is taken),
+// and 20 cm / 10 deg from both (neither explains it: the frame is refused).
+TEST(DenseRefined, APredictionThatDoesNotExplainTheDepthGivesWayToTheSparseFit) {
+  const mrpt::poses::CPose3D motion(0.3, 0.03, 0.06, mrpt::DEG2RAD(18.0), mrpt::DEG2RAD(6.0), 0);
+  Frames f(motion);
+  hrgbd::RegistrationResult s;
+  s.status = hrgbd::FrameResult::Status::Ok;
+  s.sparse_ok = true;
+  s.T = Isometry3d::Identity();
+  s.seen.path = "photometric";
+  const Isometry3d guess = perturbed(f.truth, 0.005, 0.5);
+  // where the two refinements end, the same refinement as DenseRefined's
+  const hrgbd::DenseParams p;
+  const auto d = hrgbd::refineDense(hrgbd::buildDensePyramid(f.cur.image, p),
+                                    hrgbd::buildDensePyramid(f.ref.image, p), {s.T, guess}, p);
+  ASSERT_TRUE(d.ok) << d.detail;
+  ASSERT_EQ(d.start, 1u);
+  ASSERT_TRUE(d.first_start_refined.has_value());
+  const Isometry3d sparse_end = *d.first_start_refined;
+  ASSERT_GT(error(sparse_end, f.truth).first, 0.1);
+
+  const auto scene = hrgbd::sim::makeScene("desk", false);
+  const auto depthSeenFrom = [&](const Isometry3d& T) {
+    return render(scene, referencePose() + hrgbd::toPose(T)).depth;
+  };
+  {
+    const auto r = refined(f, s, guess);
+    ASSERT_TRUE(r.ok()) << r.detail;
+    EXPECT_EQ(r.seen.path, "dense");
+    EXPECT_LT(error(r.T, f.truth).first, 0.002);
+  }
+  {
+    Frames g(motion);  // refined() leaves the depth it is given in the frame
+    const auto r = refined(g, s, guess, p, depthSeenFrom(sparse_end));
+    ASSERT_TRUE(r.ok()) << r.detail;
+    EXPECT_EQ(r.seen.path, "photometric+dense");
+    EXPECT_LT(error(r.T, sparse_end).first, 1e-9);
+  }
+  {
+    Frames g(motion);
+    const auto r = refined(g, s, guess, p, depthSeenFrom(perturbed(f.truth, 0.2, 10.0)));
+    EXPECT_EQ(r.status, hrgbd::FrameResult::Status::LargeResiduals);
+    EXPECT_NE(r.detail.find("neither motion explains it"), std::string::npos) << r.detail;
+  }
 }

@@ -106,6 +106,11 @@ TEST(DenseRefinement, TheBetterStartWins) {
     ASSERT_TRUE(d.ok) << d.detail;
     EXPECT_TRUE(starts[d.start].isApprox(near));
     EXPECT_LT(error(d.T, pair.truth).first, 0.001);
+    // the first start's own refinement is kept only where it lost (beyond the basin: far off)
+    EXPECT_EQ(d.first_start_refined.has_value(), d.start != 0);
+    if (d.first_start_refined) {
+      EXPECT_GT(error(*d.first_start_refined, pair.truth).first, 0.05);
+    }
   }
 }
 

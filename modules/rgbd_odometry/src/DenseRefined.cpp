@@ -18,6 +18,34 @@ bool near(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b, double metres,
   return g.metres <= metres && mrpt::RAD2DEG(g.radians) <= deg;
 }
 
+// The depth check of a motion (DenseParams::min_depth_agreement).
+struct DepthCheck {
+  bool judged = false;  //!< at least min_pixels points landed on known reference depth
+  bool passed = false;  //!< agrees, or not judged (nothing to judge by)
+  std::string why;      //!< the share that agrees, when judged and short
+};
+
+// every 2nd pixel (as many points as the default finest level's), within 3 sigma of the
+// depth-noise model of two readings; its time is added to `ms`
+DepthCheck checkDepth(const Frame& cur, const Frame& ref, const Eigen::Isometry3d& T,
+                      const DenseParams& p, double& ms) {
+  const DepthTolerance within3sigma{0, 3 * std::sqrt(2.0) * p.depth_noise};
+  const DepthAgreement a =
+      timed(ms, [&] { return depthAgreement(cur.image, ref.image, T, within3sigma, 2); });
+  DepthCheck c;
+  c.judged = a.compared >= static_cast<std::size_t>(p.min_pixels);
+  c.passed = !c.judged || a.share() >= p.min_depth_agreement;
+  if (!c.passed) {
+    std::ostringstream why;
+    why << std::setprecision(2) << a.share()
+        << " of the points on known reference depth agree with the reference depth (< "
+           "min_depth_agreement "
+        << p.min_depth_agreement << ")";
+    c.why = why.str();
+  }
+  return c;
+}
+
 }  // namespace
 
 DenseRefined::DenseRefined(std::unique_ptr<Registration> inner, const DenseParams& params)
@@ -64,34 +92,42 @@ RegistrationResult DenseRefined::align(Frame& cur, Frame& ref) {
                 std::to_string(d.normal_spread) + ")";
     return r;
   }
-  // a refinement alone must explain the reference's depth (every 2nd pixel: as many points as
-  // the default finest level's), within 3 sigma of the depth-noise model of two readings; where
-  // fewer than min_pixels points land on known reference depth (a keyframe without depth), there
-  // is nothing to judge by, and the intensity pairs stand
-  if (!r.ok() && m_params.min_depth_agreement > 0) {
-    const DepthTolerance within3sigma{0, 3 * std::sqrt(2.0) * m_params.depth_noise};
-    const DepthAgreement a = timed(r.seen.ms.refine, [&] {
-      return depthAgreement(cur.image, ref.image, d.T, within3sigma, 2);
-    });
-    const double agreement = a.share();
-    if (a.compared >= static_cast<std::size_t>(m_params.min_pixels) &&
-        agreement < m_params.min_depth_agreement) {
-      std::ostringstream why;
-      why << std::setprecision(2) << "; dense: " << agreement
-          << " of the points on known reference depth agree with the reference depth (< "
-             "min_depth_agreement "
-          << m_params.min_depth_agreement << "): the motion found does not explain it";
-      r.detail += why.str();
+  // A refinement that no sparse estimate supports must explain the reference's depth: one alone,
+  // or one from the prediction that fitted better than the sparse fit's. Where it does not, the
+  // sparse fit's own refinement is taken if that explains it, and otherwise the frame is refused.
+  // Where fewer than min_pixels points land on known reference depth (a keyframe without depth),
+  // there is nothing to judge by, and the intensity pairs stand.
+  Eigen::Isometry3d T = d.T;
+  std::size_t start = d.start;
+  if (m_params.min_depth_agreement > 0 && (!r.ok() || d.start != 0)) {
+    const DepthCheck winner = checkDepth(cur, ref, d.T, m_params, r.seen.ms.refine);
+    if (!winner.passed && !r.ok()) {
+      r.detail += "; dense: " + winner.why + ": the motion found does not explain it";
       return r;
     }
+    if (!winner.passed) {
+      const DepthCheck sparse = d.first_start_refined ? checkDepth(cur, ref, *d.first_start_refined,
+                                                                   m_params, r.seen.ms.refine)
+                                                      : DepthCheck{};
+      if (!sparse.judged || !sparse.passed) {
+        r.status = FrameResult::Status::LargeResiduals;
+        r.detail = "dense: from the motion prediction, " + winner.why + "; from the sparse fit, " +
+                   (!d.first_start_refined ? "not refined to the finest level"
+                    : sparse.judged        ? sparse.why
+                                           : "too few points on known reference depth") +
+                   ": neither motion explains it";
+        return r;
+      }
+      T = *d.first_start_refined, start = 0;
+    }
   }
-  if (!near(starts[d.start], d.T, m_params.max_correction, m_params.max_correction_deg)) {
+  if (!near(starts[start], T, m_params.max_correction, m_params.max_correction_deg)) {
     r.status = FrameResult::Status::LargeResiduals;
     r.detail = "dense refinement moved the start too far: neither estimate is trusted";
     return r;
   }
-  r.seen.path = r.ok() && d.start == 0 ? r.seen.path + "+dense" : "dense";
-  r.T = d.T;
+  r.seen.path = r.ok() && start == 0 ? r.seen.path + "+dense" : "dense";
+  r.T = T;
   r.status = FrameResult::Status::Ok;
   return r;
 }

@@ -145,6 +145,10 @@ DenseResult refineDense(const DensePyramid& cur, const DensePyramid& ref,
   }
   out.ok = true;
   out.T = T;
+  // the first start's own refinement when another won (the first is never dropped: it is earlier
+  // than any start it could meet)
+  if (out.start != 0 && refined.front().start == 0 && refined.front().n.H.allFinite())
+    out.first_start_refined = refined.front().T;
   return out;
 }
 

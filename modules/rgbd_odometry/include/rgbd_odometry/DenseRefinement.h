@@ -10,6 +10,7 @@
  * depth alike. Its ideas are those of DVO (Kerl et al.) and KinectFusion's projective ICP. */
 #include <Eigen/Geometry>
 #include <opencv2/core.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -58,14 +59,17 @@ struct DenseParams : public Params<DenseParams> {
    * n n^T of its normals at least this. Measured: simulated plain wall 0.048 (noisy normals),
    * real plain structure 0.13, simulated structures 0.24-0.28. */
   double min_normal_spread = 0.1;
-  /** A frame registered by the refinement alone (no sparse estimate) must explain the reference's
-   * depth: at least this share of its points (every 2nd pixel) that the motion moves onto known
-   * reference depth must agree with it within 3 sigma of the depth-noise model of two readings
-   * (DepthAgreement.h). Measured on correct motions: real frames 0.48-0.99 (fr1/rpy's fast rotation
-   * lowest; 0.63-0.98 on the 18 registered by the refinement alone), simulated 0.69-0.92; on wrong
-   * ones that the refinement from the prediction had accepted (teddy shuffled, frames 0.1-1.3 m
-   * apart) 0.00-0.32. Fewer than min_pixels points on known reference depth (a keyframe without
-   * depth): not judged. 0 = no check. */
+  /** A frame registered by the refinement alone (no sparse estimate), or by the refinement from
+   * the motion prediction where that fitted better than the sparse fit's, must explain the
+   * reference's depth: at least this share of its points (every 2nd pixel) that the motion moves
+   * onto known reference depth must agree with it within 3 sigma of the depth-noise model of two
+   * readings (DepthAgreement.h). Where the prediction's does not, the sparse fit's refinement is
+   * taken if it does; otherwise the frame is flagged. Measured on correct motions: real frames
+   * 0.48-0.99 (fr1/rpy's fast rotation lowest; 0.63-0.98 on the 18 registered by the refinement
+   * alone, 0.50-0.93 on the 20 where the prediction won), simulated 0.69-0.92; on wrong ones that
+   * the refinement from the prediction had accepted (teddy shuffled, frames 0.1-1.3 m apart)
+   * 0.00-0.39. Fewer than min_pixels points on known reference depth (a keyframe without depth):
+   * not judged. 0 = no check. */
   double min_depth_agreement = 0.45;
   /** [ms] readout time of a rolling shutter, first row to last, of colour and depth alike; each
    * row's points are moved to the frame time (the middle row) with the camera's velocity.
@@ -103,7 +107,7 @@ struct DenseParams : public Params<DenseParams> {
     HRGBD_PARAM(min_normal_spread, "registered densely alone without texture: normals must spread",
                 Range::closed(0, 1.0 / 3));
     HRGBD_PARAM(min_depth_agreement,
-                "registered densely alone: share of points agreeing with the reference depth",
+                "refinement alone / from the prediction: share of points agreeing with the depth",
                 Range::closed(0, 1));
     HRGBD_PARAM(rolling_shutter_ms, "[ms] rolling-shutter readout, first to last row (0 = global)",
                 Range::atLeast(0));
@@ -166,6 +170,8 @@ struct DenseResult {
    * taken without an evaluation and not counted) */
   int iterations = 0;
   std::size_t start = 0;  //!< index of the start that fitted best
+  /** when another start fitted best: where starts[0] was refined to at the finest level */
+  std::optional<Eigen::Isometry3d> first_start_refined;
   /** smallest eigenvalue of the mean n n^T of the paired reference normals: near 0 when the
    * surfaces seen do not face three independent directions (a plane, a corner) */
   double normal_spread = 0;
