@@ -1,5 +1,7 @@
 #include "rgbd_odometry/DescriptorMatching.h"
 
+#include <immintrin.h>
+
 #include <cstdint>
 #include <cstring>
 #include <limits>
@@ -60,13 +62,68 @@ __attribute__((target_clones("popcnt", "default"))) void hammingNearest(
   }
 }
 
+// The same with AVX-512's popcount of 64-bit lanes (VPOPCNTQ), where the CPU has it: 8 targets at
+// a time, their words transposed (plane w of a block holds word w of its 8 targets), so that one
+// XOR and one popcount per word give 8 distances, and each row's minimum and the columns' minima
+// are kept in vectors. Ties resolve as above (first index): a lane keeps its first minimum, and
+// the row's is the smallest index among the lanes that hold the minimum; the rows come in order.
+__attribute__((target("avx512f,avx512vpopcntdq"))) void hammingNearestAvx512(
+    const std::uint64_t* a, int na, const std::uint64_t* b, int nb, int words, Nearest& n) {
+  const int blocks = (nb + 7) / 8;
+  std::vector<std::uint64_t> planes(static_cast<std::size_t>(blocks) * words * 8, 0);
+  for (int j = 0; j < nb; ++j)
+    for (int w = 0; w < words; ++w)
+      planes[(static_cast<std::size_t>(j / 8) * words + w) * 8 + j % 8] =
+          b[static_cast<std::size_t>(j) * words + w];
+  constexpr std::int64_t kNever = std::numeric_limits<std::int64_t>::max();
+  std::vector<std::int64_t> col_min(static_cast<std::size_t>(blocks) * 8, kNever),
+      col_arg(static_cast<std::size_t>(blocks) * 8, -1);
+  const __m512i lane = _mm512_setr_epi64(0, 1, 2, 3, 4, 5, 6, 7);
+  const __mmask8 last_valid = static_cast<__mmask8>(nb % 8 ? (1u << (nb % 8)) - 1 : 0xFF);
+  for (int i = 0; i < na; ++i) {
+    const std::uint64_t* ai = a + static_cast<std::size_t>(i) * words;
+    __m512i best = _mm512_set1_epi64(kNever), best_j = _mm512_setzero_si512();
+    const __m512i iv = _mm512_set1_epi64(i);
+    for (int blk = 0; blk < blocks; ++blk) {
+      const std::uint64_t* plane = planes.data() + static_cast<std::size_t>(blk) * words * 8;
+      __m512i d = _mm512_setzero_si512();
+      for (int w = 0; w < words; ++w)
+        d = _mm512_add_epi64(d, _mm512_popcnt_epi64(_mm512_xor_si512(
+                                    _mm512_set1_epi64(static_cast<long long>(ai[w])),
+                                    _mm512_loadu_si512(plane + 8 * w))));
+      if (blk == blocks - 1) d = _mm512_mask_blend_epi64(last_valid, _mm512_set1_epi64(kNever), d);
+      const __mmask8 row = _mm512_cmplt_epi64_mask(d, best);
+      best = _mm512_mask_mov_epi64(best, row, d);
+      best_j =
+          _mm512_mask_mov_epi64(best_j, row, _mm512_add_epi64(_mm512_set1_epi64(blk * 8), lane));
+      std::int64_t* cm = col_min.data() + static_cast<std::size_t>(blk) * 8;
+      const __mmask8 col = _mm512_cmplt_epi64_mask(d, _mm512_loadu_si512(cm));
+      _mm512_mask_storeu_epi64(cm, col, d);
+      _mm512_mask_storeu_epi64(col_arg.data() + static_cast<std::size_t>(blk) * 8, col, iv);
+    }
+    alignas(64) std::int64_t lane_best[8], lane_j[8];  // (GCC 12's reduce intrinsics warn)
+    _mm512_store_si512(lane_best, best);
+    _mm512_store_si512(lane_j, best_j);
+    int l = 0;
+    for (int k = 1; k < 8; ++k)
+      if (lane_best[k] < lane_best[l] || (lane_best[k] == lane_best[l] && lane_j[k] < lane_j[l]))
+        l = k;
+    n.row[i] = static_cast<int>(lane_j[l]);
+    n.row_distance[i] = static_cast<float>(lane_best[l]);
+  }
+  for (int j = 0; j < nb; ++j) n.col[j] = static_cast<int>(col_arg[j]);
+}
+
 Nearest nearestHamming(const cv::Mat& source, const cv::Mat& target) {
   CV_Assert(source.type() == CV_8U && target.type() == CV_8U && source.cols == target.cols);
   const int words = (source.cols + 7) / 8;
   const auto a = packWords(source, words), b = packWords(target, words);
   Nearest n{std::vector<int>(source.rows), std::vector<int>(target.rows, -1),
             std::vector<float>(source.rows)};
-  hammingNearest(a.data(), source.rows, b.data(), target.rows, words, n);
+  static const bool avx512 =
+      __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vpopcntdq");
+  (avx512 ? hammingNearestAvx512 : hammingNearest)(a.data(), source.rows, b.data(), target.rows,
+                                                   words, n);
   return n;
 }
 
