@@ -59,12 +59,16 @@ TEST(DescriptorMatching, HandWrittenHammingAgreesWithOpenCv) {
       if (dist.at<int>(k, bj) < dist.at<int>(bi, bj)) bi = k;
     if (bi == i && dist.at<int>(i, bj) <= 40) expected.emplace_back(i, bj);
   }
-  const auto r = hrgbd::matchMutual(src, tgt, cv::NORM_HAMMING, 40);
   ASSERT_GT(expected.size(), 10u);
-  ASSERT_EQ(r.matches.size(), expected.size());
-  for (std::size_t m = 0; m < expected.size(); ++m) {
-    EXPECT_EQ(r.matches[m].source, expected[m].first);
-    EXPECT_EQ(r.matches[m].target, expected[m].second);
-    EXPECT_FLOAT_EQ(r.matches[m].distance, dist.at<int>(expected[m].first, expected[m].second));
+  for (const bool avx512 : {true, false}) {  // AVX-512 where the CPU has it, the portable loop
+    hrgbd::allowAvx512Matching(avx512);
+    const auto r = hrgbd::matchMutual(src, tgt, cv::NORM_HAMMING, 40);
+    ASSERT_EQ(r.matches.size(), expected.size());
+    for (std::size_t m = 0; m < expected.size(); ++m) {
+      EXPECT_EQ(r.matches[m].source, expected[m].first);
+      EXPECT_EQ(r.matches[m].target, expected[m].second);
+      EXPECT_FLOAT_EQ(r.matches[m].distance, dist.at<int>(expected[m].first, expected[m].second));
+    }
   }
+  hrgbd::allowAvx512Matching(true);
 }

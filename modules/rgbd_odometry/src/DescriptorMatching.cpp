@@ -2,6 +2,7 @@
 
 #include <immintrin.h>
 
+#include <atomic>
 #include <cstdint>
 #include <cstring>
 #include <limits>
@@ -114,20 +115,28 @@ __attribute__((target("avx512f,avx512vpopcntdq"))) void hammingNearestAvx512(
   for (int j = 0; j < nb; ++j) n.col[j] = static_cast<int>(col_arg[j]);
 }
 
+std::atomic<bool> g_avx512_allowed{true};
+
+bool useAvx512() {
+  static const bool has =
+      __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vpopcntdq");
+  return has && g_avx512_allowed;
+}
+
 Nearest nearestHamming(const cv::Mat& source, const cv::Mat& target) {
   CV_Assert(source.type() == CV_8U && target.type() == CV_8U && source.cols == target.cols);
   const int words = (source.cols + 7) / 8;
   const auto a = packWords(source, words), b = packWords(target, words);
   Nearest n{std::vector<int>(source.rows), std::vector<int>(target.rows, -1),
             std::vector<float>(source.rows)};
-  static const bool avx512 =
-      __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vpopcntdq");
-  (avx512 ? hammingNearestAvx512 : hammingNearest)(a.data(), source.rows, b.data(), target.rows,
-                                                   words, n);
+  (useAvx512() ? hammingNearestAvx512 : hammingNearest)(a.data(), source.rows, b.data(),
+                                                        target.rows, words, n);
   return n;
 }
 
 }  // namespace
+
+void allowAvx512Matching(bool allowed) { g_avx512_allowed = allowed; }
 
 MatchResult matchMutual(const cv::Mat& source, const cv::Mat& target, int norm,
                         double max_distance) {
