@@ -56,7 +56,9 @@ void requireSize(const cv::Mat& img, const mrpt::img::TCamera& c, const char* wh
 // Removes the lens distortion of the colour camera (fr1 and fr2 have some) from the grey image
 // and the depth registered to it, so that every later stage may assume a pinhole camera. The
 // maps are made once per calibration (OpenCV's undistortion maps; depth by nearest neighbour so
-// that unknown depth never blends into known depth).
+// that unknown depth never blends into known depth), in OpenCV's fixed-point form, which remap()
+// would make from float maps on every call: the same images, BM_PrepareFrameWithLensDistortion
+// 1.41-1.44 -> 1.32-1.36 ms (the undistortion is 1.1 ms of it).
 void undistort(RgbdImage& f, const mrpt::img::TCamera& c) {
   if (std::all_of(c.dist.begin(), c.dist.end(), [](double d) { return d == 0; })) return;
   const std::array<double, 11> key{f.cam.fx,
@@ -71,15 +73,19 @@ void undistort(RgbdImage& f, const mrpt::img::TCamera& c) {
                                    c.dist[3],
                                    c.dist[4]};
   thread_local std::array<double, 11> made{};
-  thread_local cv::Mat mx, my;
+  thread_local cv::Mat linear_xy, linear_a, nearest_xy;
   if (key != made) {
     const cv::Mat K = (cv::Mat_<double>(3, 3) << key[0], 0, key[2], 0, key[1], key[3], 0, 0, 1);
     const cv::Mat D = (cv::Mat_<double>(1, 5) << key[6], key[7], key[8], key[9], key[10]);
+    cv::Mat mx, my;
     cv::initUndistortRectifyMap(K, D, cv::noArray(), K, f.grey.size(), CV_32FC1, mx, my);
+    cv::convertMaps(mx, my, linear_xy, linear_a, CV_16SC2, false);
+    cv::Mat unused;
+    cv::convertMaps(mx, my, nearest_xy, unused, CV_16SC2, true);
     made = key;
   }
-  cv::remap(f.grey, f.grey, mx, my, cv::INTER_LINEAR, cv::BORDER_REPLICATE);
-  cv::remap(f.depth, f.depth, mx, my, cv::INTER_NEAREST, cv::BORDER_CONSTANT, 0);
+  cv::remap(f.grey, f.grey, linear_xy, linear_a, cv::INTER_LINEAR, cv::BORDER_REPLICATE);
+  cv::remap(f.depth, f.depth, nearest_xy, cv::noArray(), cv::INTER_NEAREST, cv::BORDER_CONSTANT, 0);
 }
 
 }  // namespace
