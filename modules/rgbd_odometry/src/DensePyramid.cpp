@@ -107,6 +107,31 @@ void dropDerivatives(DenseLevel& level) {
 
 bool hasDerivatives(const DenseLevel& level) { return !level.samples.empty(); }
 
+namespace {
+constexpr double kPackedDepthUnits = 4000;  //!< [1/m] packed depth: 0.25 mm units, up to 16.38 m
+}  // namespace
+
+void packLevels(DensePyramid& pyramid) {
+  for (auto& l : pyramid.levels) {
+    if (l.grey.type() == CV_16F) continue;
+    dropDerivatives(l);
+    l.grey.convertTo(l.grey, CV_16F);
+    cv::Mat depth = l.depth.clone();
+    depth.setTo(0, ~(depth < 65535 / kPackedDepthUnits));  // NaN (unknown) and beyond the range
+    depth.convertTo(l.depth, CV_16U, kPackedDepthUnits);
+  }
+}
+
+void unpackLevels(DensePyramid& pyramid) {
+  for (auto& l : pyramid.levels) {
+    if (l.grey.type() != CV_16F) continue;
+    l.grey.convertTo(l.grey, CV_32F);
+    const cv::Mat unknown = l.depth == 0;
+    l.depth.convertTo(l.depth, CV_32F, 1 / kPackedDepthUnits);
+    l.depth.setTo(kNaN, unknown);
+  }
+}
+
 void addDerivatives(DensePyramid& pyramid, const DenseParams& params) {
   for (auto& level : pyramid.levels)
     if (!hasDerivatives(level)) addDerivatives(level, params);

@@ -32,7 +32,8 @@ OdometryParams loopRegistration(OdometryParams odometry, const SlamParams& p) {
 
 /** What the loop search keeps of a prepared keyframe: its features, and its pyramids' grey and
  * depth (the gradients, normals and textured cells are made again when the keyframe is a loop's
- * reference: 0.9 instead of 3.8 MB a keyframe at 320x240, the finest level used). The images
+ * reference: 0.9 instead of 3.8 MB a keyframe at 320x240, the finest level used; packed in 2
+ * bytes a pixel once the keyframe's own search is done, packLevels(): 0.5 MB). The images
  * (1.5 MB at 640x480) only serve to compute features: a textured keyframe has
  * its ORB features, one with too few has IS3D + SHOT (prepared by the tracker's hybrid
  * registration). A textured keyframe's IS3D + SHOT are not made, so a keyframe with too few ORB
@@ -199,7 +200,6 @@ void KeyframeSlam::work() {
 
 void KeyframeSlam::process(Job job) {
   const std::size_t id = job.id;
-  const std::size_t kept = keptBytes(*job.frame);
   m_keyframes.push_back(std::move(job.frame));
   const auto& orb = m_keyframes.back()->orb;
   m_words.push_back(m_vocabulary && orb ? m_vocabulary->transform(orb->descriptors) : BowVector{});
@@ -225,6 +225,9 @@ void KeyframeSlam::process(Job job) {
     }
     return 0;
   });
+  // searched: from now on only a reference (reference() unpacks a copy)
+  if (m_keyframes.back()->dense) packLevels(*m_keyframes.back()->dense);
+  const std::size_t kept = keptBytes(*m_keyframes.back());
   std::optional<PoseGraphOptimization> opt;
   if (accepted > 0) opt = m_graph.optimize(m_params.loop_max_chi2, m_params.optimizer_iterations);
   std::lock_guard<std::mutex> lock(m_mutex);

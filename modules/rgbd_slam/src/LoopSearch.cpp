@@ -102,9 +102,9 @@ Frame& KeyframeSlam::reference(std::size_t id) {
                          [&](const auto& r) { return r.first == id; });
   if (it == m_references.end()) {
     // a copy (sharing the kept images and pyramids, its feature vectors copied) whose pyramids
-    // get their derivatives again
+    // are unpacked (new images) and get their derivatives again
     auto f = std::make_shared<Frame>(*m_keyframes[id]);
-    if (f->dense) addDerivatives(*f->dense, m_odometry.dense);
+    if (f->dense) unpackLevels(*f->dense), addDerivatives(*f->dense, m_odometry.dense);
     m_references.emplace_front(id, std::move(f));
     if (m_references.size() > kReferences) m_references.pop_back();
     return *m_references.front().second;

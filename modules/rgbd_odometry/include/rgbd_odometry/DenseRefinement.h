@@ -160,6 +160,14 @@ bool hasDerivatives(const DenseLevel& level);
 void addDerivatives(DensePyramid& pyramid, const DenseParams& params);
 /** dropDerivatives() on every level. */
 void dropDerivatives(DensePyramid& pyramid);
+/** Stores a pyramid kept for later use in half the memory: every level's derivatives dropped, its
+ * grey in half precision (at most 0.06 grey levels off) and its depth in 16-bit units of 0.25 mm
+ * (at most 0.125 mm off; unknown, and depth beyond 16.38 m, as 0). No refinement can read it
+ * until unpackLevels(). */
+void packLevels(DensePyramid& pyramid);
+/** Restores the grey and depth of packLevels() (CV_32F, unknown depth NaN); its derivatives are
+ * then made again by addDerivatives(). Levels not packed are left as they are. */
+void unpackLevels(DensePyramid& pyramid);
 
 /** Result of refineDense(). */
 struct DenseResult {
