@@ -112,7 +112,7 @@ RegistrationResult DenseRefined::align(Frame& cur, Frame& ref) {
       if (!sparse.judged || !sparse.passed) {
         r.status = FrameResult::Status::LargeResiduals;
         r.detail = "dense: from the motion prediction, " + winner.why + "; from the sparse fit, " +
-                   (!d.first_start_refined ? "not refined to the finest level"
+                   (!d.first_start_refined ? "its normal equations not finite"
                     : sparse.judged        ? sparse.why
                                            : "too few points on known reference depth") +
                    ": neither motion explains it";
@@ -123,7 +123,7 @@ RegistrationResult DenseRefined::align(Frame& cur, Frame& ref) {
   }
   if (!near(starts[start], T, m_params.max_correction, m_params.max_correction_deg)) {
     r.status = FrameResult::Status::LargeResiduals;
-    r.detail = "dense refinement moved the start too far: neither estimate is trusted";
+    r.detail = "dense refinement moved the start that fitted best too far: not trusted";
     return r;
   }
   r.seen.path = r.ok() && start == 0 ? r.seen.path + "+dense" : "dense";

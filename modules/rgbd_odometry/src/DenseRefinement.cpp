@@ -147,7 +147,8 @@ DenseResult refineDense(const DensePyramid& cur, const DensePyramid& ref,
   out.T = T;
   // the first start's own refinement when another won (the first is never dropped: it is earlier
   // than any start it could meet)
-  if (out.start != 0 && refined.front().start == 0 && refined.front().n.H.allFinite())
+  const NormalEquations& first = refined.front().n;
+  if (out.start != 0 && refined.front().start == 0 && first.H.allFinite() && first.b.allFinite())
     out.first_start_refined = refined.front().T;
   return out;
 }

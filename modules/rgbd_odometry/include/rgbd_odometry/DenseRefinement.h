@@ -67,9 +67,9 @@ struct DenseParams : public Params<DenseParams> {
    * taken if it does; otherwise the frame is flagged. Measured on correct motions: real frames
    * 0.48-0.99 (fr1/rpy's fast rotation lowest; 0.63-0.98 on the 18 registered by the refinement
    * alone, 0.50-0.93 on the 20 where the prediction won), simulated 0.69-0.92; on wrong ones that
-   * the refinement from the prediction had accepted (teddy shuffled, frames 0.1-1.3 m apart)
-   * 0.00-0.39. Fewer than min_pixels points on known reference depth (a keyframe without depth):
-   * not judged. 0 = no check. */
+   * the refinement from the prediction had accepted (frames out of order, 0.1-1.3 m apart)
+   * 0.00-0.32, and 0.39 on fr1/rpy with its depth scaled by 1.1. Fewer than min_pixels points on
+   * known reference depth (a keyframe without depth): not judged. 0 = no check. */
   double min_depth_agreement = 0.45;
   /** [ms] readout time of a rolling shutter, first row to last, of colour and depth alike; each
    * row's points are moved to the frame time (the middle row) with the camera's velocity.
