@@ -60,6 +60,9 @@ TEST(DescriptorMatching, HandWrittenHammingAgreesWithOpenCv) {
     if (bi == i && dist.at<int>(i, bj) <= 40) expected.emplace_back(i, bj);
   }
   ASSERT_GT(expected.size(), 10u);
+  struct Restore {  // the default again, also when an assertion leaves the loop
+    ~Restore() { hrgbd::allowAvx512Matching(true); }
+  } restore;
   for (const bool avx512 : {true, false}) {  // AVX-512 where the CPU has it, the portable loop
     hrgbd::allowAvx512Matching(avx512);
     const auto r = hrgbd::matchMutual(src, tgt, cv::NORM_HAMMING, 40);
@@ -70,5 +73,4 @@ TEST(DescriptorMatching, HandWrittenHammingAgreesWithOpenCv) {
       EXPECT_FLOAT_EQ(r.matches[m].distance, dist.at<int>(expected[m].first, expected[m].second));
     }
   }
-  hrgbd::allowAvx512Matching(true);
 }

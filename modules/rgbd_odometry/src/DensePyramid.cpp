@@ -107,28 +107,30 @@ void dropDerivatives(DenseLevel& level) {
 
 bool hasDerivatives(const DenseLevel& level) { return !level.samples.empty(); }
 
-namespace {
-constexpr double kPackedDepthUnits = 4000;  //!< [1/m] packed depth: 0.25 mm units, up to 16.38 m
-}  // namespace
-
 void packLevels(DensePyramid& pyramid) {
   for (auto& l : pyramid.levels) {
-    if (l.grey.type() == CV_16F) continue;
+    if (l.packed_depth_units > 0) continue;
     dropDerivatives(l);
     l.grey.convertTo(l.grey, CV_16F);
+    const cv::Mat known = (l.depth > 0) & (l.depth < std::numeric_limits<float>::max());
+    double farthest = 0;
+    cv::minMaxLoc(l.depth, nullptr, &farthest, nullptr, nullptr, known);
+    // the farthest known depth is 65534 units: the precision follows the depth's scale
+    l.packed_depth_units = farthest > 0 ? 65534 / farthest : 1;
     cv::Mat depth = l.depth.clone();
-    depth.setTo(0, ~(depth < 65535 / kPackedDepthUnits));  // NaN (unknown) and beyond the range
-    depth.convertTo(l.depth, CV_16U, kPackedDepthUnits);
+    depth.setTo(0, ~known);  // NaN (unknown)
+    depth.convertTo(l.depth, CV_16U, l.packed_depth_units);
   }
 }
 
 void unpackLevels(DensePyramid& pyramid) {
   for (auto& l : pyramid.levels) {
-    if (l.grey.type() != CV_16F) continue;
+    if (l.packed_depth_units <= 0) continue;
     l.grey.convertTo(l.grey, CV_32F);
     const cv::Mat unknown = l.depth == 0;
-    l.depth.convertTo(l.depth, CV_32F, 1 / kPackedDepthUnits);
+    l.depth.convertTo(l.depth, CV_32F, 1 / l.packed_depth_units);
     l.depth.setTo(kNaN, unknown);
+    l.packed_depth_units = 0;
   }
 }
 
@@ -158,7 +160,8 @@ DensePyramid buildDensePyramid(const RgbdImage& image, const DenseParams& params
       level.cam = halveCamera(level.cam);
     }
     if (l < params.finest_level) continue;
-    DenseLevel out{level.cam, level.grey, level.depth, {}, {}, {}, {}};
+    DenseLevel out;
+    out.cam = level.cam, out.grey = level.grey, out.depth = level.depth;
     if (derivatives) addDerivatives(out, params);
     pyramid.levels.push_back(std::move(out));
   }

@@ -74,6 +74,12 @@ DenseResult refineDense(const DensePyramid& cur, const DensePyramid& ref,
     return out;
   }
   out.T = starts.front();
+  const auto packed = [](const DenseLevel& l) { return l.packed_depth_units > 0; };
+  if (std::any_of(cur.levels.begin(), cur.levels.end(), packed) ||
+      std::any_of(ref.levels.begin(), ref.levels.end(), packed)) {
+    out.detail = "dense refinement: a pyramid is packed (unpackLevels)";
+    return out;
+  }
   if (!std::all_of(ref.levels.begin(), ref.levels.end(), hasDerivatives)) {
     out.detail = "dense refinement: the reference pyramid has no derivatives (addDerivatives)";
     return out;

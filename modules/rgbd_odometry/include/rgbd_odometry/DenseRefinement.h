@@ -127,6 +127,9 @@ struct DenseLevel {
    * the gradient reaches it, and the refinement skips the cell (a shortcut, the same result) */
   cv::Mat textured;
   double textured_gradient = 0;  //!< [grey levels/px] the min_gradient it was made with
+  /** [1/m] packLevels() stored grey as CV_16F and depth as CV_16U in these units (0 = unknown);
+   * 0 = not packed */
+  double packed_depth_units = 0;
   /** CV_32FC4, (grey, gx, gy, 0) of each pixel side by side, gx and gy its intensity gradients
    * [grey levels per pixel]: the refinement reads a reference's 2x2 cell as 4 vectors of 16
    * bytes, not 12 scattered floats (the depth stays apart: most pairs read only the depth, from
@@ -161,9 +164,9 @@ void addDerivatives(DensePyramid& pyramid, const DenseParams& params);
 /** dropDerivatives() on every level. */
 void dropDerivatives(DensePyramid& pyramid);
 /** Stores a pyramid kept for later use in half the memory: every level's derivatives dropped, its
- * grey in half precision (at most 0.06 grey levels off) and its depth in 16-bit units of 0.25 mm
- * (at most 0.125 mm off; unknown, and depth beyond 16.38 m, as 0). No refinement can read it
- * until unpackLevels(). */
+ * grey in half precision (at most 1/16 grey level off) and its depth in 16-bit units, the
+ * level's farthest known depth being 65534 of them (at most 1/131068 of it off: 0.04 mm for 5
+ * m; unknown as 0). refineDense() refuses it until unpackLevels(). */
 void packLevels(DensePyramid& pyramid);
 /** Restores the grey and depth of packLevels() (CV_32F, unknown depth NaN); its derivatives are
  * then made again by addDerivatives(). Levels not packed are left as they are. */
