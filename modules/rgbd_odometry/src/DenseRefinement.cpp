@@ -52,6 +52,9 @@ NormalEquations solveLevel(LevelSolver& solver, Eigen::Isometry3d& T, const Dens
   return n;
 }
 
+// Whether a step could be taken from these normal equations (what the scoring requires of a start).
+bool solvable(const NormalEquations& n) { return n.H.allFinite() && n.b.allFinite(); }
+
 // Whether two refinements of different starts have met at a level: within two converged steps
 // there (`step`: converged_px / fx of the level; metres and radians together). On fr1/rpy 57 of
 // the 70 frames with two starts ended within 0.5 mm and 0.03 deg; dropping the later start once a
@@ -123,7 +126,7 @@ DenseResult refineDense(const DensePyramid& cur, const DensePyramid& ref,
   for (std::size_t i = 0; i < refined.size(); ++i) {
     const auto& [start, Ti, n0, scales, finest_start] = refined[i];
     NormalEquations n = n0;
-    if (!n.H.allFinite() || !n.b.allFinite()) continue;  // no step could be taken there
+    if (!solvable(n)) continue;  // no step could be taken there
     if (scales.depth_noise < depth_noise) {
       solvers.front().startAt(finest_start);  // this start's rolling-shutter correction
       n = solvers.front().normalEquations(Ti, {scales.photometric, depth_noise});
@@ -153,8 +156,7 @@ DenseResult refineDense(const DensePyramid& cur, const DensePyramid& ref,
   out.T = T;
   // the first start's own refinement when another won (the first is never dropped: it is earlier
   // than any start it could meet)
-  const NormalEquations& first = refined.front().n;
-  if (out.start != 0 && refined.front().start == 0 && first.H.allFinite() && first.b.allFinite())
+  if (out.start != 0 && refined.front().start == 0 && solvable(refined.front().n))
     out.first_start_refined = refined.front().T;
   return out;
 }
