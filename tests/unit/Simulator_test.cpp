@@ -241,3 +241,28 @@ TEST(Simulator, TheLoopMotionReturnsToItsStart) {
   }
   EXPECT_GT(mrpt::RAD2DEG(widest), 25.0);  // 35 deg of azimuth seen from above: 29.9
 }
+
+TEST(Simulator, TheWalkerCrossesTheSceneAndComesBack) {
+  const auto scene = makeScene("desk", false);  // sweep_axis x
+  auto centre_x = [&](double t) {
+    const auto s = withWalker(scene, t, 0.5);
+    EXPECT_EQ(s.quads.size(), scene.quads.size() + 5);  // a box without a bottom
+    const auto& top = s.quads.back();
+    return top.origin.x() + 0.5 * top.u.x();
+  };
+  // 0.8 m either side of look_at, 3.2 s from one end to the other at 0.5 m/s
+  EXPECT_NEAR(centre_x(0.0), -0.8, 1e-9);
+  EXPECT_NEAR(centre_x(1.6), 0.0, 1e-9);
+  EXPECT_NEAR(centre_x(3.2), 0.8, 1e-9);
+  EXPECT_NEAR(centre_x(4.8), 0.0, 1e-9);
+  EXPECT_NEAR(centre_x(6.4), -0.8, 1e-9);
+  // and the camera sees it move: from one pose, the depth changes where it was and where it is
+  const hrgbd::PinholeCamera cam;
+  const auto pose = lookAt(Eigen::Vector3d(0, 0.3, 1.35), scene.look_at);
+  const auto a = renderIdeal(withWalker(scene, 1.0, 0.5), pose, cam);
+  const auto b = renderIdeal(withWalker(scene, 2.2, 0.5), pose, cam);
+  const auto still = renderIdeal(scene, pose, cam);
+  cv::Mat moved = cv::abs(a.depth - b.depth) > 0.05;
+  EXPECT_GT(cv::countNonZero(moved), cam.width * cam.height / 50);
+  EXPECT_GT(cv::countNonZero(cv::abs(a.depth - still.depth) > 0.05), 0);
+}

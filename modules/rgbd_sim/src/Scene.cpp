@@ -112,6 +112,22 @@ void addBox(Scene& s, const V& mn, const V& mx, const V& colour, int texture) {
   s.quads.push_back(quad(mn + ez, ex, ey, colour, texture < 0 ? -1 : texture + 1));  // top
 }
 
+Scene withWalker(Scene s, double t, double speed) {
+  constexpr double kRange = 0.8;  // [m] either side of the path's centre
+  V away = -s.view_dir;
+  away.z() = 0;
+  away = away.norm() > 1e-9 ? away.normalized() : V(0, 1, 0);
+  const V axis = s.sweep_axis.normalized();
+  // a triangle wave: -kRange at t = 0, +kRange after 2 kRange / speed, back again
+  const double phase = std::fmod(speed * t / (4 * kRange), 1.0);
+  const double x = kRange * (phase < 0.5 ? 4 * phase - 1 : 3 - 4 * phase);
+  V centre = s.look_at + 0.5 * away + x * axis;
+  centre.z() = 0;
+  const V half = 0.5 * (0.45 * axis.cwiseAbs() + 0.25 * away.cwiseAbs());
+  addBox(s, centre - half, centre + half + V(0, 0, 1.7), V(0.25, 0.35, 0.55), 121);
+  return s;
+}
+
 const std::vector<std::string>& sceneTypes() {
   static const std::vector<std::string> t{"texture", "structure", "structure_texture",
                                           "desk",    "wall",      "object"};

@@ -338,7 +338,10 @@ SimResult simulate(const SimParams& p, const SimOutputs& outputs, Progress* prog
   std::vector<double> ms;
   for (int i = 0; i < p.frames; ++i) {
     const auto t0 = std::chrono::steady_clock::now();
-    const SensorFrame frame = renderFrame(scene, cam, p, poses, i, rng);
+    const SensorFrame frame =
+        p.walker_speed > 0
+            ? renderFrame(withWalker(scene, poses.times[i], p.walker_speed), cam, p, poses, i, rng)
+            : renderFrame(scene, cam, p, poses, i, rng);
     ms.push_back(
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
     const double t = kStart + poses.times[i];

@@ -47,6 +47,12 @@ void addBox(Scene& s, const Eigen::Vector3d& min, const Eigen::Vector3d& max,
  * camera at ~2 m instead of ~1 m. Throws for other names. */
 Scene makeScene(const std::string& type, bool far);
 
+/** `scene` at time `t` [s] with a person-sized textured box walking back and forth across it at
+ * `speed` [m/s] (a moving object, as in TUM's fr2/desk_with_person or fr3/walking): 0.45 m
+ * wide, 0.25 m deep, 1.7 m tall, on the floor 0.5 m beyond look_at (away from the camera), its
+ * centre moving +-0.8 m along sweep_axis, starting at one end. */
+Scene withWalker(Scene scene, double t, double speed);
+
 /** The scene type names makeScene() accepts. */
 const std::vector<std::string>& sceneTypes();
 
