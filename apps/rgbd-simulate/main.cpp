@@ -57,9 +57,9 @@ int main(int argc, char** argv) {
   ValueArg<int> seed("", "seed", "noise seed (1)", false, 1, "SEED", cmd);
   ValueArg<std::string> motion("", "motion", "sweep, loop, or a TUM trajectory to replay", false,
                                "sweep", "FILE", cmd);
-  ValueArg<double> walker("", "walker_speed",
-                          "[m/s] a person-sized box walks across the scene (0: none)", false, 0,
-                          cmd.atLeast(0.0, "M/S"), cmd);
+  ValueArg<double> walker("", "walker-speed",
+                          "[m/s] a person-sized box walks across the scene (0: none; at most 10)",
+                          false, 0, cmd.atLeast(0.0, "M/S"), cmd);
   ValueArg<std::string> rawlog("o", "rawlog", "output rawlog", false, "", "OUT.rawlog", cmd);
   ValueArg<std::string> tum("", "tum", "output TUM folder", false, "", "FOLDER", cmd);
   ValueArg<std::string> oni("", "oni", "output OpenNI recording", false, "", "OUT.oni", cmd);
@@ -76,7 +76,8 @@ int main(int argc, char** argv) {
     if (config.isSet()) copySimulatorSection(config.getValue(), ini);
     for (auto* a : {&scene, &motion}) put(ini, *a, !config.isSet());
     for (auto* a : {&frames, &seed}) put(ini, *a, !config.isSet());
-    put(ini, walker, !config.isSet());
+    if (walker.isSet() || !config.isSet())  // the option's name has a hyphen, the key not
+      ini.write("Simulator", "walker_speed", walker.getValue());
     if (far.isSet()) ini.write("Simulator", "far", "true");
     hrgbd::sim::SimParams p;
     p.loadFromConfigFile(ini, "Simulator");

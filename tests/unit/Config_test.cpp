@@ -134,6 +134,9 @@ TEST(Config, RangeIsCheckedNamingSectionKeyAndBound) {
   EXPECT_NE(msg.find("[K] count = 11: must be in [-10, 10]"), std::string::npos) << msg;
   msg = kindsMessageOf("size = 0");
   EXPECT_NE(msg.find("[K] size = 0: must be > 0"), std::string::npos) << msg;
+  // beyond the "unbounded" end (1e300): not "must be > 0", which it is
+  msg = kindsMessageOf("size = 1e308");
+  EXPECT_NE(msg.find("[K] size = 1e+308: must be in (0, 1e+300]"), std::string::npos) << msg;
   EXPECT_EQ(kindsMessageOf("count = 10"), "");
   Kinds k;
   k.count = -11;  // set in code: validate() applies the same checks

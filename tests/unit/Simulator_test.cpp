@@ -256,6 +256,8 @@ TEST(Simulator, TheWalkerCrossesTheSceneAndComesBack) {
   EXPECT_NEAR(centre_x(3.2), 0.8, 1e-9);
   EXPECT_NEAR(centre_x(4.8), 0.0, 1e-9);
   EXPECT_NEAR(centre_x(6.4), -0.8, 1e-9);
+  EXPECT_NEAR(centre_x(-1.6), 0.0, 1e-9);  // before the start: the same wave
+  EXPECT_NEAR(centre_x(-3.2), 0.8, 1e-9);
   // and the camera sees it move: from one pose, the depth changes where it was and where it is
   const hrgbd::PinholeCamera cam;
   const auto pose = lookAt(Eigen::Vector3d(0, 0.3, 1.35), scene.look_at);

@@ -28,8 +28,10 @@ std::string Range::why(double v) const {
   const bool below = lo_open ? !(v > lo) : !(v >= lo);
   const bool over = hi_open ? !(v < hi) : !(v <= hi);
   if (!below && !over) return "";
-  if (unbounded(hi)) return std::string("must be ") + (lo_open ? "> " : ">= ") + number(lo);
-  if (unbounded(lo)) return std::string("must be ") + (hi_open ? "< " : "<= ") + number(hi);
+  // (a value beyond an "unbounded" end, 1e300 or more, gets the full range below)
+  if (unbounded(hi) && below)
+    return std::string("must be ") + (lo_open ? "> " : ">= ") + number(lo);
+  if (unbounded(lo) && over) return std::string("must be ") + (hi_open ? "< " : "<= ") + number(hi);
   return "must be in " + std::string(lo_open ? "(" : "[") + number(lo) + ", " + number(hi) +
          (hi_open ? ")" : "]");
 }

@@ -113,18 +113,28 @@ void addBox(Scene& s, const V& mn, const V& mx, const V& colour, int texture) {
 }
 
 Scene withWalker(Scene s, double t, double speed) {
-  constexpr double kRange = 0.8;  // [m] either side of the path's centre
+  constexpr double kRange = 0.8;   // [m] either side of the path's centre
+  constexpr double kBeyond = 0.6;  // [m] from look_at, away from the camera
+  constexpr double kWidth = 0.45;  // [m] along the path
+  constexpr double kDepth = 0.15;  // [m] across it (behind the desk, short of its wall)
+  constexpr double kHeight = 1.7;  // [m]
+  // horizontal unit vectors: away from the camera, and along the path (every scene's sweep_axis
+  // and view direction lie along x or y, so the box stays axis-aligned)
   V away = -s.view_dir;
   away.z() = 0;
   away = away.norm() > 1e-9 ? away.normalized() : V(0, 1, 0);
-  const V axis = s.sweep_axis.normalized();
-  // a triangle wave: -kRange at t = 0, +kRange after 2 kRange / speed, back again
-  const double phase = std::fmod(speed * t / (4 * kRange), 1.0);
+  V axis = s.sweep_axis - s.sweep_axis.dot(away) * away;
+  axis.z() = 0;
+  axis = axis.norm() > 1e-9 ? axis.normalized() : away.cross(V(0, 0, 1));
+  // a triangle wave: -kRange at t = 0, +kRange half a period later, back after a whole one
+  const double period = 4 * kRange / speed;  // [s]
+  double phase = std::fmod(t, period) / period;
+  phase -= std::floor(phase);  // t < 0
   const double x = kRange * (phase < 0.5 ? 4 * phase - 1 : 3 - 4 * phase);
-  V centre = s.look_at + 0.5 * away + x * axis;
+  V centre = s.look_at + kBeyond * away + x * axis;
   centre.z() = 0;
-  const V half = 0.5 * (0.45 * axis.cwiseAbs() + 0.25 * away.cwiseAbs());
-  addBox(s, centre - half, centre + half + V(0, 0, 1.7), V(0.25, 0.35, 0.55), 121);
+  const V half = 0.5 * (kWidth * axis.cwiseAbs() + kDepth * away.cwiseAbs());
+  addBox(s, centre - half, centre + half + V(0, 0, kHeight), V(0.25, 0.35, 0.55), 121);
   return s;
 }
 

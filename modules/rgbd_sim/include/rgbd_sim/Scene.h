@@ -48,9 +48,10 @@ void addBox(Scene& s, const Eigen::Vector3d& min, const Eigen::Vector3d& max,
 Scene makeScene(const std::string& type, bool far);
 
 /** `scene` at time `t` [s] with a person-sized textured box walking back and forth across it at
- * `speed` [m/s] (a moving object, as in TUM's fr2/desk_with_person or fr3/walking): 0.45 m
- * wide, 0.25 m deep, 1.7 m tall, on the floor 0.5 m beyond look_at (away from the camera), its
- * centre moving +-0.8 m along sweep_axis, starting at one end. */
+ * `speed` [m/s] (> 0; a moving object, as in TUM's fr2/desk_with_person or fr3/walking): 0.45 m
+ * wide, 0.15 m deep, 1.7 m tall, on the floor 0.6 m beyond look_at (away from the camera), its
+ * centre moving +-0.8 m along sweep_axis, starting at one end. It is placed at time t only (no
+ * motion blur, no rolling shutter of its own). */
 Scene withWalker(Scene scene, double t, double speed);
 
 /** The scene type names makeScene() accepts. */

@@ -30,7 +30,7 @@ struct SimParams : public Params<SimParams> {
    * scene's look_at. */
   std::string motion = "sweep";
   /** [m/s] a person-sized textured box walks back and forth across the scene (withWalker();
-   * a moving object); 0 = none */
+   * a moving object); 0 = none, at most 10 */
   double walker_speed = 0;
   KinectModel sensor;  //!< its keys are in this section too
 
@@ -42,7 +42,7 @@ struct SimParams : public Params<SimParams> {
     HRGBD_PARAM(fps, "[Hz] frame rate", Range::openClosed(0, 1000));
     HRGBD_PARAM(seed, "noise and jitter seed");
     HRGBD_PARAM(motion, "sweep, loop, or a TUM trajectory file to replay");
-    HRGBD_PARAM(walker_speed, "[m/s] a moving person-sized box (0 = none)", Range::atLeast(0));
+    HRGBD_PARAM(walker_speed, "[m/s] a moving person-sized box (0 = none)", Range::closed(0, 10));
     v.merge(p.sensor);  // the sensor model's keys are in the same section
   }
 };
