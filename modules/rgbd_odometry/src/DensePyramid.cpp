@@ -117,8 +117,8 @@ void packLevels(DensePyramid& pyramid) {
     cv::minMaxLoc(l.depth, nullptr, &farthest, nullptr, nullptr, known);
     // the farthest known depth is 65534 units: the precision follows the depth's scale
     l.packed_depth_units = farthest > 0 ? 65534 / farthest : 1;
-    cv::Mat depth = l.depth.clone();
-    depth.setTo(0, ~known);  // NaN (unknown)
+    cv::Mat depth = l.depth.clone();  // (its buffer may be shared with the tracker's keyframe)
+    depth.setTo(0, ~known);           // NaN (unknown)
     depth.convertTo(l.depth, CV_16U, l.packed_depth_units);
   }
 }

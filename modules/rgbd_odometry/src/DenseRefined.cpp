@@ -22,7 +22,7 @@ bool near(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b, double metres,
 struct DepthCheck {
   bool judged = false;  //!< at least min_pixels points landed on known reference depth
   bool passed = false;  //!< agrees, or not judged (nothing to judge by)
-  std::string why;      //!< the share that agrees, when judged and short
+  std::string why;      //!< why it does not vouch for the motion: short, or not judged
 };
 
 // every 2nd pixel (as many points as the default finest level's), within 3 sigma of the
@@ -35,6 +35,7 @@ DepthCheck checkDepth(const Frame& cur, const Frame& ref, const Eigen::Isometry3
   DepthCheck c;
   c.judged = a.compared >= static_cast<std::size_t>(p.min_pixels);
   c.passed = !c.judged || a.share() >= p.min_depth_agreement;
+  if (!c.judged) c.why = "too few points on known reference depth";
   if (!c.passed) {
     std::ostringstream why;
     why << std::setprecision(2) << a.share()
@@ -112,9 +113,7 @@ RegistrationResult DenseRefined::align(Frame& cur, Frame& ref) {
       if (!sparse.judged || !sparse.passed) {
         r.status = FrameResult::Status::LargeResiduals;
         r.detail = "dense: from the motion prediction, " + winner.why + "; from the sparse fit, " +
-                   (!d.first_start_refined ? "its normal equations not finite"
-                    : sparse.judged        ? sparse.why
-                                           : "too few points on known reference depth") +
+                   (d.first_start_refined ? sparse.why : "its normal equations not finite") +
                    ": neither motion explains it";
         return r;
       }
