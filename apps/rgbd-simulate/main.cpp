@@ -45,6 +45,16 @@ std::string summary(const hrgbd::sim::SimParams& p, const hrgbd::sim::SimResult&
     << ", median " << r.ms_per_frame << " ms/frame (" << 1000.0 / r.ms_per_frame << " fps)\n";
   return s.str();
 }
+
+/** Frames that see little of the scene, or nothing. */
+std::string sparseDepthWarning(const hrgbd::sim::SimParams& p, const hrgbd::sim::SimResult& r) {
+  if (r.sparse_depth_frames == 0) return "";
+  std::ostringstream s;
+  s << "warning: " << r.sparse_depth_frames << " of " << r.frames
+    << " frames have depth on under a quarter of the image: the camera looks past the scene"
+    << (hrgbd::sim::isProceduralMotion(p.motion) ? "" : " (the motion file leaves it)") << "\n";
+  return s.str();
+}
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -103,5 +113,6 @@ int main(int argc, char** argv) {
     const auto r = hrgbd::sim::simulate(p, outputs, quiet.getValue() ? nullptr : &progress);
     if (!quiet.getValue()) progress.finish();
     std::cout << summary(p, r);
+    std::cerr << sparseDepthWarning(p, r);
   });
 }

@@ -102,6 +102,26 @@ TEST(Simulator, SameSeedSameFrames) {
       sb{std::istreambuf_iterator<char>(fb), {}};
   EXPECT_EQ(sa, sb);
   EXPECT_EQ(a.ground_truth.size(), 2u);
+  EXPECT_EQ(a.sparse_depth_frames, 0);  // the sweep sees the desk
+}
+
+TEST(Simulator, FramesThatLookPastTheSceneAreCounted) {
+  // A camera turning in place, 30 deg a frame: facing the desk, its depth fills the image; facing
+  // away, it sees little. rgbd-simulate warns with the count.
+  hrgbd::Trajectory spin;
+  for (int i = 0; i <= 12; ++i) {
+    const double a = mrpt::DEG2RAD(30.0 * i);
+    const Eigen::Vector3d eye(0, 0, 1);
+    spin.push_back({i / 30.0, lookAt(eye, eye + Eigen::Vector3d(std::cos(a), std::sin(a), 0))});
+  }
+  const auto dir = hrgbd::test::tempDir("sim_spin");
+  hrgbd::saveTumTrajectory(dir + "/spin.txt", spin);
+  SimParams p;
+  p.frames = 12;
+  p.motion = dir + "/spin.txt";
+  const auto r = simulate(p, {dir + "/spin.rawlog", "", hrgbd::ImageStorage::Inline, ""});
+  EXPECT_GT(r.sparse_depth_frames, 0);
+  EXPECT_LT(r.sparse_depth_frames, 12);
 }
 
 TEST(Simulator, ATumFolderSaysItsCameraWhateverItsName) {
@@ -177,6 +197,23 @@ TEST(Simulator, ReplayedMotionLooksAtTheScene) {
     slide.push_back(
         {i * 0.1, lookAt(Eigen::Vector3d(0.01 * i, 0, 1), Eigen::Vector3d(0.01 * i, 2, 1))});
   EXPECT_LT((lookedAtPoint(slide, 1.5) - Eigen::Vector3d(0, 1.5, 1)).norm(), 0.05);
+  // Sliding +-0.3 m and turning with the slide (up to 8.6 deg, as a hand-held camera does): the
+  // axes meet 2 m behind the cameras (fr1/xyz's 792 frames met 0.3 m behind: blank frames).
+  // The point must be ahead of every camera, inside its image (half width 320 / fx 525 = 0.61).
+  hrgbd::Trajectory turning;
+  for (int i = 0; i < 200; ++i) {
+    const double x = 0.3 * std::sin(0.1 * i);
+    const Eigen::Vector3d eye(x, 0, 1);
+    turning.push_back(
+        {i / 30.0, lookAt(eye, eye + Eigen::Vector3d(std::sin(0.5 * x), std::cos(0.5 * x), 0))});
+  }
+  const Eigen::Vector3d seen = lookedAtPoint(turning, 1.0);
+  for (const auto& q : turning) {
+    const auto local =
+        q.pose.inverseComposePoint(mrpt::math::TPoint3D(seen.x(), seen.y(), seen.z()));
+    EXPECT_GT(local.z, 0.8) << "t = " << q.t;
+    EXPECT_LT(std::abs(local.x) / local.z, 0.61) << "t = " << q.t;
+  }
 
   const auto file = hrgbd::test::tempDir("sim_replay") + "/orbit.txt";
   hrgbd::saveTumTrajectory(file, orbit);

@@ -57,7 +57,9 @@ Trajectory cameraPath(const Scene& scene, const SimParams& params,
                       const std::vector<double>& times);
 
 /** The point a hand-held camera path looked at: nearest to all its optical axes (least squares),
- * or about `distance` [m] ahead of the first camera when the axes are near-parallel. */
+ * or about `distance` [m] ahead of the first camera when the axes are near-parallel; when that
+ * point is not ahead of the cameras at 0.5-3 x `distance` (median), the mean of the points
+ * `distance` ahead of each camera. */
 Eigen::Vector3d lookedAtPoint(const Trajectory& path, double distance);
 
 /** The first pose of a sweep: at `distance` from look_at along view_dir, looking at look_at. */
@@ -75,9 +77,15 @@ struct SimOutputs {
   std::string oni;
 };
 
+/** Share of the image below which a frame's depth counts as sparse (SimResult). */
+constexpr double kSparseDepthShare = 0.25;
+
 struct SimResult {
   int frames = 0;
   double ms_per_frame = 0;  //!< [ms] median render + sensor model time
+  /** frames with depth on under kSparseDepthShare of the image: the camera looks past the
+   * scene (a replayed motion that leaves it) */
+  int sparse_depth_frames = 0;
   Trajectory ground_truth;
 };
 
