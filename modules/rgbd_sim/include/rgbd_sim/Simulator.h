@@ -58,8 +58,8 @@ Trajectory cameraPath(const Scene& scene, const SimParams& params,
 
 /** The point a hand-held camera path looked at: nearest to all its optical axes (least squares),
  * or about `distance` [m] ahead of the first camera when the axes are near-parallel; when that
- * point is not ahead of the cameras at 0.5-3 x `distance` (median), the mean of the points
- * `distance` ahead of each camera. */
+ * point is not ahead of the cameras (median) by 0.5 m (the sensor's nearest depth) to 3 x
+ * `distance`, the mean of the points `distance` ahead of each camera. */
 Eigen::Vector3d lookedAtPoint(const Trajectory& path, double distance);
 
 /** The first pose of a sweep: at `distance` from look_at along view_dir, looking at look_at. */
