@@ -106,8 +106,9 @@ TEST(Simulator, SameSeedSameFrames) {
 }
 
 TEST(Simulator, FramesThatLookPastTheSceneAreCounted) {
-  // A camera turning in place, 30 deg a frame: facing the desk, its depth fills the image; facing
-  // away, it sees little. rgbd-simulate warns with the count.
+  // A camera turning all round in place, 30 deg a frame, replayed over the plain wall (put ahead
+  // of its first frame): facing the wall, its depth fills the image; facing away, it sees
+  // nothing. rgbd-simulate warns with the count.
   hrgbd::Trajectory spin;
   for (int i = 0; i <= 12; ++i) {
     const double a = mrpt::DEG2RAD(30.0 * i);
@@ -117,6 +118,7 @@ TEST(Simulator, FramesThatLookPastTheSceneAreCounted) {
   const auto dir = hrgbd::test::tempDir("sim_spin");
   hrgbd::saveTumTrajectory(dir + "/spin.txt", spin);
   SimParams p;
+  p.scene = "wall";
   p.frames = 12;
   p.motion = dir + "/spin.txt";
   const auto r = simulate(p, {dir + "/spin.rawlog", "", hrgbd::ImageStorage::Inline, ""});
@@ -198,7 +200,7 @@ TEST(Simulator, ReplayedMotionLooksAtTheScene) {
         {i * 0.1, lookAt(Eigen::Vector3d(0.01 * i, 0, 1), Eigen::Vector3d(0.01 * i, 2, 1))});
   EXPECT_LT((lookedAtPoint(slide, 1.5) - Eigen::Vector3d(0, 1.5, 1)).norm(), 0.05);
   // Sliding +-0.3 m and turning with the slide (up to 8.6 deg, as a hand-held camera does): the
-  // axes meet 2 m behind the cameras (fr1/xyz's 792 frames met 0.3 m behind: blank frames).
+  // least-squares point is 0.58 m behind the cameras (fr1/xyz's 792 frames: 0.28 m, blank frames).
   // The point must be ahead of every camera, inside its image (half width 320 / fx 525 = 0.61).
   hrgbd::Trajectory turning;
   for (int i = 0; i < 200; ++i) {
@@ -229,6 +231,25 @@ TEST(Simulator, ReplayedMotionLooksAtTheScene) {
     EXPECT_NEAR(local.z, 1.2 * std::hypot(1, 0.5 / 1.2), 0.1);  // the real distance
     EXPECT_LT(std::hypot(local.x, local.y) / local.z, 0.05);    // near the optical axis
   }
+}
+
+TEST(Simulator, AMotionSampledSlowerThanTheFramesIsInterpolated) {
+  // Poses 1 s apart: the window of poses read (up to 0.1 s past the last frame) held only the
+  // first, and every frame after it was "cannot interpolate".
+  hrgbd::Trajectory slow;
+  for (int i = 0; i < 2; ++i)
+    slow.push_back(
+        {i * 1.0, lookAt(Eigen::Vector3d(0.5 * i, 0, 1), Eigen::Vector3d(0.5 * i, 2, 1))});
+  const auto file = hrgbd::test::tempDir("sim_slow_motion") + "/slow.txt";
+  hrgbd::saveTumTrajectory(file, slow);
+  SimParams p;
+  p.motion = file;
+  std::vector<double> times;
+  for (int i = 0; i < 10; ++i) times.push_back(i / 30.0);
+  const auto path = cameraPath(makeScene(p.scene, false), p, times);
+  ASSERT_EQ(path.size(), times.size());
+  for (std::size_t i = 1; i < path.size(); ++i)  // 0.5 m/s along the slide
+    EXPECT_NEAR((path[i].pose - path[0].pose).norm(), 0.5 * times[i], 1e-6);
 }
 
 TEST(Simulator, AMotionBeyondTheEvaluatorsRangeIsRefusedNamingThePose) {

@@ -83,9 +83,21 @@ Trajectory loadMotion(const std::string& file, const std::vector<double>& times)
   if (last > span)
     throw std::runtime_error("motion file '" + file + "' covers only " + std::to_string(span) +
                              " s");
+  // and the first pose past that when none is at or after the last time (a file sampled below
+  // 10 Hz: interpolation needs a pose on either side)
+  const TimedPose* after = nullptr;
+  bool covered = false;
+  for (const auto& q : real) {
+    const double t = q.t - real[0].t;
+    if (t > last + 0.1) {
+      if (!after || q.t < after->t) after = &q;
+    } else {
+      covered = covered || t >= last;
+    }
+  }
   Trajectory used;
   for (const auto& q : real) {
-    if (q.t - real[0].t > last + 0.1) continue;
+    if (q.t - real[0].t > last + 0.1 && (covered || &q != after)) continue;
     for (int k = 0; k < 3; ++k)  // the evaluator's limit: the ground truth written stays exact
       if (!(std::abs(q.pose[k]) <= kMaxTrajectoryCoordinate))
         throw std::runtime_error("motion file '" + file + "': the pose at time stamp " +
@@ -99,9 +111,10 @@ Trajectory loadMotion(const std::string& file, const std::vector<double>& times)
 /** The rotation about the vertical and translation (TUM ground truth has z up, as the scene)
  * that move the point `path` looked at onto the scene's look_at, with the cameras on the side
  * of view_dir. */
-mrpt::poses::CPose3D replayAnchor(const Scene& scene, const Trajectory& path) {
+mrpt::poses::CPose3D replayAnchor(const Scene& scene, const Trajectory& path,
+                                  const KinectModel& sensor) {
   const Eigen::Vector3d view = scene.view_dir.normalized();
-  const Eigen::Vector3d target = lookedAtPoint(path, scene.distance);
+  const Eigen::Vector3d target = lookedAtPoint(path, scene.distance, sensor);
   Eigen::Vector2d away(0, 0);  // mean horizontal direction from the target to the camera
   for (const auto& q : path) {
     const Eigen::Vector2d h(q.pose.x() - target.x(), q.pose.y() - target.y());
@@ -118,10 +131,10 @@ mrpt::poses::CPose3D replayAnchor(const Scene& scene, const Trajectory& path) {
 
 // Replay: the real trajectory, moved by replayAnchor(). Camera height above the looked-at point,
 // distance to it, tilt and roll stay the real ones.
-Trajectory replayPath(const Scene& scene, const std::string& file,
-                      const std::vector<double>& times) {
+Trajectory replayPath(const Scene& scene, const SimParams& p, const std::vector<double>& times) {
+  const std::string& file = p.motion;
   const Trajectory used = loadMotion(file, times);
-  const mrpt::poses::CPose3D anchor = replayAnchor(scene, used);
+  const mrpt::poses::CPose3D anchor = replayAnchor(scene, used, p.sensor);
   mrpt::poses::CPose3DInterpolator interp;
   for (const auto& q : used) interp.insert(mrpt::Clock::fromDouble(q.t), q.pose);
   Trajectory out;
@@ -141,47 +154,7 @@ Trajectory replayPath(const Scene& scene, const std::string& file,
 Trajectory cameraPath(const Scene& scene, const SimParams& p, const std::vector<double>& times) {
   if (p.motion == "sweep") return sweepPath(scene, p.seed, times);
   if (p.motion == "loop") return loopPath(scene, p.frames / p.fps, times);
-  return replayPath(scene, p.motion, times);
-}
-
-// The optical axes' meeting point is used when its depth (median over the cameras) is at least
-// the sensor's nearest range [m] and at most this many times the scene's distance: real orbits
-// met at 0.9 m (teddy), 1.0-1.4 m (cabinet) and 2.2 m (the plain structure), fr1/xyz's first 30
-// frames at 0.64 m (the benchmark's replays, near and far).
-constexpr double kMetAtLeast = 0.5, kMetAtMost = 3;
-
-Eigen::Vector3d lookedAtPoint(const Trajectory& path, double distance) {
-  // Least-squares point nearest to all optical axes, sum |(I - d d^T)(x - c)|^2, pulled weakly
-  // towards the first camera's axis at `distance` so that near-parallel axes (a camera that
-  // only translates) still give a point in front of it.
-  Eigen::Matrix3d A = Eigen::Matrix3d::Zero();
-  Eigen::Vector3d b = Eigen::Vector3d::Zero();
-  auto add = [&](const Eigen::Matrix3d& P, const Eigen::Vector3d& x) { A += P, b += P * x; };
-  for (const auto& q : path) {
-    const Eigen::Vector3d c(q.pose.x(), q.pose.y(), q.pose.z());
-    const Eigen::Vector3d d = q.pose.getRotationMatrix().asEigen().col(2);
-    add(Eigen::Matrix3d::Identity() - d * d.transpose(), c);
-  }
-  const auto& first = path.front().pose;
-  const Eigen::Vector3d prior = Eigen::Vector3d(first.x(), first.y(), first.z()) +
-                                distance * first.getRotationMatrix().asEigen().col(2);
-  add(0.01 * static_cast<double>(path.size()) * Eigen::Matrix3d::Identity(), prior);
-  const Eigen::Vector3d met = A.ldlt().solve(b);
-  // Axes that do not meet in front of the cameras at a depth a scene can have: a camera that
-  // mostly translates and turns a little (fr1/xyz's 792 frames met 0.3 m behind them, fr1/desk's
-  // first 90 frames 0.2 m: the scene was put behind the camera) or one that turns in place. Then
-  // the mean of the points `distance` ahead of each camera.
-  std::vector<double> depths;
-  Eigen::Vector3d ahead = Eigen::Vector3d::Zero();
-  for (const auto& q : path) {
-    const Eigen::Vector3d c(q.pose.x(), q.pose.y(), q.pose.z());
-    const Eigen::Vector3d d = q.pose.getRotationMatrix().asEigen().col(2);
-    depths.push_back((met - c).dot(d));
-    ahead += c + distance * d;
-  }
-  const double depth = median(depths);
-  if (depth >= kMetAtLeast && depth <= kMetAtMost * distance) return met;
-  return ahead / static_cast<double>(path.size());
+  return replayPath(scene, p, times);
 }
 
 namespace {

@@ -57,10 +57,12 @@ Trajectory cameraPath(const Scene& scene, const SimParams& params,
                       const std::vector<double>& times);
 
 /** The point a hand-held camera path looked at: nearest to all its optical axes (least squares),
- * or about `distance` [m] ahead of the first camera when the axes are near-parallel; when that
- * point is not ahead of the cameras (median) by 0.5 m (the sensor's nearest depth) to 3 x
- * `distance`, the mean of the points `distance` ahead of each camera. */
-Eigen::Vector3d lookedAtPoint(const Trajectory& path, double distance);
+ * or about `distance` [m] ahead of the first camera when the axes are near-parallel. When the
+ * cameras do not see that point (median depth) at 0.5-3 x `distance` within the sensor's range,
+ * the mean of the points `distance` ahead of each camera; when they do not see that either (a
+ * camera turning all round), the point `distance` ahead of the first camera. */
+Eigen::Vector3d lookedAtPoint(const Trajectory& path, double distance,
+                              const KinectModel& sensor = {});
 
 /** The first pose of a sweep: at `distance` from look_at along view_dir, looking at look_at. */
 mrpt::poses::CPose3D lookAt(const Eigen::Vector3d& eye, const Eigen::Vector3d& target);
