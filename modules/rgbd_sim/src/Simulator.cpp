@@ -73,8 +73,10 @@ Trajectory loopPath(const Scene& scene, double period, const std::vector<double>
   return out;
 }
 
-/** The poses of the TUM trajectory `file` up to 0.1 s past the last of `times`, time stamps
- * made relative to its first. Throws when it is shorter than `times`. */
+/** The poses of the TUM trajectory `file` up to 0.1 s past the last of `times`, and the first
+ * pose after that when none is at or after the last time (a file sampled below 10 Hz: the
+ * interpolation needs a pose on either side); time stamps made relative to its first. Throws
+ * when it is shorter than `times`. */
 Trajectory loadMotion(const std::string& file, const std::vector<double>& times) {
   const auto real = loadTumTrajectory(file);
   if (real.size() < 2) throw std::runtime_error("motion file '" + file + "' has < 2 poses");
@@ -83,9 +85,7 @@ Trajectory loadMotion(const std::string& file, const std::vector<double>& times)
   if (last > span)
     throw std::runtime_error("motion file '" + file + "' covers only " + std::to_string(span) +
                              " s");
-  // and the first pose past that when none is at or after the last time (a file sampled below
-  // 10 Hz: interpolation needs a pose on either side)
-  const TimedPose* after = nullptr;
+  const TimedPose* after = nullptr;  // the first pose past the window
   bool covered = false;
   for (const auto& q : real) {
     const double t = q.t - real[0].t;
@@ -130,7 +130,8 @@ mrpt::poses::CPose3D replayAnchor(const Scene& scene, const Trajectory& path,
 }
 
 // Replay: the real trajectory, moved by replayAnchor(). Camera height above the looked-at point,
-// distance to it, tilt and roll stay the real ones.
+// tilt and roll stay the real ones, and so does the distance to it when the cameras see the
+// point their axes meet (lookedAtPoint()).
 Trajectory replayPath(const Scene& scene, const SimParams& p, const std::vector<double>& times) {
   const std::string& file = p.motion;
   const Trajectory used = loadMotion(file, times);
