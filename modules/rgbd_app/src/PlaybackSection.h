@@ -33,8 +33,8 @@ struct PlaybackSection : public Params<PlaybackSection> {
     loadFromConfigFile(c, "Playback");
     // The default trajectory (no key) stays relative to the working directory.
     const bool trajectory_given = c.keyExists("Playback", "trajectory");
-    for (auto* path : {&input, &trajectory, &csv, &graph, &outputs.output_rawlog, &outputs.simplemap,
-                       &outputs.map_ply, &outputs.map_scene})
+    for (auto* path : {&input, &trajectory, &csv, &graph, &outputs.output_rawlog,
+                       &outputs.simplemap, &outputs.map_ply, &outputs.map_scene})
       if (*path != "openni2" && (path != &trajectory || trajectory_given))
         *path = resolvePath(base, *path);
   }
