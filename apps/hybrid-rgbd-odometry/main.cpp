@@ -30,6 +30,10 @@ int main(int argc, char** argv) {
   TCLAP::SwitchArg no_slam("", "no-slam", "SLAM mode off: the odometry alone", cmd);
   Text graph("", "graph", "SLAM mode: the pose graph, MRPT text format", false, "", "OUT.graph",
              cmd);
+  TCLAP::SwitchArg realtime("", "realtime",
+                            "play the recording as a sensor: frames on their time stamps, those "
+                            "arriving while the tracker is behind dropped (and counted)",
+                            cmd);
   TCLAP::SwitchArg quiet("q", "quiet", "no progress bar", cmd);
   TCLAP::SwitchArg print("", "print-config", "print the effective configuration and exit", cmd);
   return cmd.run(argc, argv, [&] {
@@ -46,6 +50,7 @@ int main(int argc, char** argv) {
     o.plot = plot.getValue();
     o.max_frames = max_frames.getValue();
     o.progress = !quiet.getValue();
+    o.realtime = realtime.getValue();
     o.output_rawlog = out_rawlog.getValue();
     o.simplemap = simplemap.getValue();
     o.map_ply = ply.getValue();

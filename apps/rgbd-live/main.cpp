@@ -12,6 +12,10 @@ int main(int argc, char** argv) {
                                      false, "openni2", "INPUT", cmd);
   TCLAP::ValueArg<double> rate("", "rate", "recorded input: x recorded speed (1); 0 = fastest",
                                false, 1.0, cmd.atLeast(0.0, "R"), cmd);
+  TCLAP::SwitchArg realtime("", "realtime",
+                            "recorded input played as a sensor: frames on their time stamps (x "
+                            "--rate), those arriving while the tracker is behind dropped",
+                            cmd);
   TCLAP::ValueArg<std::string> prefix("", "save-prefix", "[s] saves PREFIXmap.ply etc.", false,
                                       "live_", "PREFIX", cmd);
   // Without --hold the window stays until it is closed or [q] (hold_seconds < 0 inside).
@@ -29,6 +33,7 @@ int main(int argc, char** argv) {
     o.config = config.getValue();
     o.input = input.getValue();
     o.rate = rate.getValue();
+    o.realtime = realtime.getValue();
     o.save_prefix = prefix.getValue();
     o.hold_seconds = hold.getValue();
     o.slam = slam.getValue();

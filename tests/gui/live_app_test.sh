@@ -33,6 +33,19 @@ points=$(grep -a -m1 '^element vertex' "$out/live_map.ply" | cut -d' ' -f3)
 [ "$points" -gt 5000 ] || { echo "FAIL: saved map has $points points"; exit 1; }
 echo "PASS: map drawn, inset drawn, $points points saved"
 
+# The recording played as a sensor: every frame either tracked or counted as dropped.
+cat > "$out/realtime.sh" <<INNER
+"$app" -c "$src/config.ini" -i "$src/rawlogs/desk_near.rawlog" --realtime --no-slam --hold 0 \
+  --save-prefix "$out/realtime_" > "$out/realtime.log" 2>&1
+INNER
+xvfb-run -a -s "-screen 0 1280x800x24" bash "$out/realtime.sh"
+cat "$out/realtime.log"
+tracked=$(sed -n 's/^finished: \([0-9]*\) frames.*/\1/p' "$out/realtime.log")
+dropped=$(sed -n 's/^finished: .*, \([0-9]*\) dropped.*/\1/p' "$out/realtime.log")
+[ "$((${tracked:-0} + ${dropped:-99}))" -eq 20 ] ||
+  { echo "FAIL: played as a sensor, $tracked tracked + $dropped dropped is not 20"; exit 1; }
+echo "PASS: played as a sensor, $tracked frames tracked, $dropped dropped"
+
 # SLAM mode on real frames that revisit (skipped without ../shared/data): loops are found, shown
 # and saved with the map.
 teddy="$src/../shared/data/real/tum_fr3_teddy_200frames"

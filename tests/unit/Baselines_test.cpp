@@ -69,14 +69,14 @@ TEST(Baselines, EveryMethodTracksTheFirstStepsWithinItsMeasuredError) {
   }
 }
 
-TEST(Baselines, PeersReportTheDensePath) {
+TEST(Baselines, PeersReportThePeerPath) {
   const auto& d = desk();
   for (const auto m : {hrgbd::Method::OpencvRgbd, hrgbd::Method::Open3dColor}) {
     hrgbd::OdometryParams p;
     p.method = m;
     hrgbd::RgbdOdometry odo(p, hrgbd::makeAnyRegistration(p, hrgbd::BaselineParams()));
     const auto first = odo.processObservation(*d.frames[0]);
-    EXPECT_EQ(first.path, "dense") << toString(m);
+    EXPECT_EQ(first.path.sparse, hrgbd::FramePath::Sparse::Peer) << toString(m);
     EXPECT_EQ(first.orb_features, 0u) << toString(m);  // ORB is not run for the dense peers
   }
 }

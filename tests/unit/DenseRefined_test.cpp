@@ -58,13 +58,13 @@ TEST(DenseRefined, AResultOfThePredictionAloneIsNotASparseFit) {
     s.sparse_ok = sparse;
     s.inliers = 150;  // a failed fit may still count inliers
     s.T = perturbed(f.truth, 0.01, 1.0);
-    s.seen.path = "photometric";
+    s.seen.path.sparse = hrgbd::FramePath::Sparse::Photometric;
     const auto r = refined(f, s, perturbed(f.truth, 0.02, -1.5));
     ASSERT_TRUE(r.ok()) << r.detail;
     EXPECT_LT(error(r.T, f.truth).first, 0.002);
     EXPECT_EQ(r.sparse_ok, sparse);
     if (!sparse) {
-      EXPECT_EQ(r.seen.path, "dense");
+      EXPECT_EQ(hrgbd::toString(r.seen.path), "photometric+dense(prediction)");
     }
   }
 }
@@ -131,7 +131,7 @@ TEST(DenseRefined, APredictionThatDoesNotExplainTheDepthGivesWayToTheSparseFit) 
   s.status = hrgbd::FrameResult::Status::Ok;
   s.sparse_ok = true;
   s.T = Isometry3d::Identity();
-  s.seen.path = "photometric";
+  s.seen.path.sparse = hrgbd::FramePath::Sparse::Photometric;
   const Isometry3d guess = perturbed(f.truth, 0.005, 0.5);
   // where the two refinements end, the same refinement as DenseRefined's
   const hrgbd::DenseParams p;
@@ -150,14 +150,14 @@ TEST(DenseRefined, APredictionThatDoesNotExplainTheDepthGivesWayToTheSparseFit) 
   {
     const auto r = refined(f, s, guess);
     ASSERT_TRUE(r.ok()) << r.detail;
-    EXPECT_EQ(r.seen.path, "dense");
+    EXPECT_EQ(hrgbd::toString(r.seen.path), "photometric+dense(prediction)");
     EXPECT_LT(error(r.T, f.truth).first, 0.002);
   }
   {
     Frames g(motion);  // refined() leaves the depth it is given in the frame
     const auto r = refined(g, s, guess, p, depthSeenFrom(sparse_end));
     ASSERT_TRUE(r.ok()) << r.detail;
-    EXPECT_EQ(r.seen.path, "photometric+dense");
+    EXPECT_EQ(hrgbd::toString(r.seen.path), "photometric+dense");
     EXPECT_LT(error(r.T, sparse_end).first, 1e-9);
   }
   {
@@ -165,5 +165,6 @@ TEST(DenseRefined, APredictionThatDoesNotExplainTheDepthGivesWayToTheSparseFit) 
     const auto r = refined(g, s, guess, p, depthSeenFrom(perturbed(f.truth, 0.2, 10.0)));
     EXPECT_EQ(r.status, hrgbd::FrameResult::Status::LargeResiduals);
     EXPECT_NE(r.detail.find("neither motion explains it"), std::string::npos) << r.detail;
+    EXPECT_EQ(hrgbd::toString(r.seen.path), "photometric+dense(refused)");
   }
 }

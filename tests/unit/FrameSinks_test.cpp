@@ -127,6 +127,7 @@ TEST(CsvSink, OneRowPerFrameWithTheHeadersColumns) {
   hrgbd::CsvSink sink(dir + "/f.csv");
   auto r = result(1.5, 0.25, kLost);
   r.detail = "only 3 matches";
+  r.path = {hrgbd::FramePath::Sparse::Photometric, hrgbd::FramePath::Refined::Refused};
   sink.add(stamped(*src.next(), "1.5"), r);
   std::ostringstream log;
   sink.finish(log);
@@ -135,7 +136,8 @@ TEST(CsvSink, OneRowPerFrameWithTheHeadersColumns) {
   ASSERT_EQ(text.size(), 2u);
   const auto commas = [](const std::string& s) { return std::count(s.begin(), s.end(), ','); };
   EXPECT_EQ(commas(text[0]), commas(text[1]));
-  EXPECT_EQ(text[1].rfind("1.500000000,too_few_matches,photometric,", 0), 0u) << text[1];
+  EXPECT_EQ(text[0].rfind("timestamp,status,path,refined,", 0), 0u) << text[0];
+  EXPECT_EQ(text[1].rfind("1.500000000,too_few_matches,photometric,refused,", 0), 0u) << text[1];
   EXPECT_NE(text[1].find("\"only 3 matches\""), std::string::npos);
 }
 

@@ -12,8 +12,8 @@ namespace {
 // answers align() with a fixed result; counts its calls.
 class FakePath : public hrgbd::Registration {
  public:
-  FakePath(std::string path, int orb, Status status, std::size_t inliers, double ms)
-      : m_path(std::move(path)), m_orb(orb) {
+  FakePath(hrgbd::FramePath::Sparse path, int orb, Status status, std::size_t inliers, double ms)
+      : m_path{path}, m_orb(orb) {
     m_result.status = status;
     m_result.inliers = inliers;
     m_result.seen.path = m_path;
@@ -35,7 +35,7 @@ class FakePath : public hrgbd::Registration {
   int prepared = 0, aligned = 0;
 
  private:
-  std::string m_path;
+  hrgbd::FramePath m_path;
   int m_orb;
   hrgbd::RegistrationResult m_result;
 };
@@ -50,8 +50,10 @@ struct Case {
 // answering `geometric_status` with 40 inliers in 5 ms.
 Case make(int orb, Status status, std::size_t inliers, Status geometric_status,
           bool fallback = true) {
-  auto p = std::make_unique<FakePath>("photometric", orb, status, inliers, 2.0);
-  auto g = std::make_unique<FakePath>("geometric", -1, geometric_status, 40, 5.0);
+  auto p =
+      std::make_unique<FakePath>(hrgbd::FramePath::Sparse::Photometric, orb, status, inliers, 2.0);
+  auto g = std::make_unique<FakePath>(hrgbd::FramePath::Sparse::Geometric, -1, geometric_status, 40,
+                                      5.0);
   Case c{p.get(), g.get(), nullptr};
   c.hybrid = std::make_unique<hrgbd::HybridRegistration>(std::move(p), std::move(g),
                                                          hrgbd::HybridPolicy{50, 30, fallback});
@@ -70,9 +72,9 @@ hrgbd::RegistrationResult run(Case& c) {
 TEST(HybridRegistration, FewOrbFeaturesTakeTheGeometricPathOnly) {
   auto c = make(49, Status::Ok, 500, Status::Ok);
   hrgbd::Frame f;
-  EXPECT_EQ(c.hybrid->prepare(f).path, "geometric");
+  EXPECT_EQ(hrgbd::toString(c.hybrid->prepare(f).path), "geometric");
   const auto r = run(c);
-  EXPECT_EQ(r.seen.path, "geometric");
+  EXPECT_EQ(hrgbd::toString(r.seen.path), "geometric");
   EXPECT_EQ(c.photometric->aligned, 0);
   EXPECT_EQ(c.geometric->aligned, 1);
 }
@@ -80,9 +82,9 @@ TEST(HybridRegistration, FewOrbFeaturesTakeTheGeometricPathOnly) {
 TEST(HybridRegistration, EnoughPhotometricInliersStand) {
   auto c = make(50, Status::Ok, 30, Status::Ok);
   hrgbd::Frame f;
-  EXPECT_EQ(c.hybrid->prepare(f).path, "photometric");
+  EXPECT_EQ(hrgbd::toString(c.hybrid->prepare(f).path), "photometric");
   const auto r = run(c);
-  EXPECT_EQ(r.seen.path, "photometric");
+  EXPECT_EQ(hrgbd::toString(r.seen.path), "photometric");
   EXPECT_EQ(r.inliers, 30u);
   EXPECT_EQ(c.geometric->aligned, 0);
 }
@@ -90,12 +92,12 @@ TEST(HybridRegistration, EnoughPhotometricInliersStand) {
 TEST(HybridRegistration, FewPhotometricInliersHandOverWhenTheGeometricPathRegisters) {
   auto c = make(500, Status::Ok, 29, Status::Ok);
   const auto r = run(c);
-  EXPECT_EQ(r.seen.path, "geometric");
+  EXPECT_EQ(hrgbd::toString(r.seen.path), "geometric");
   EXPECT_EQ(r.inliers, 40u);
   EXPECT_DOUBLE_EQ(r.seen.ms.matching, 7.0);  // both attempts are counted
   auto d = make(500, Status::Ok, 29, Status::TooFewInliers);
   const auto kept = run(d);
-  EXPECT_EQ(kept.seen.path, "photometric");  // the weak photometric fit stands
+  EXPECT_EQ(hrgbd::toString(kept.seen.path), "photometric");  // the weak photometric fit stands
   EXPECT_EQ(kept.status, Status::Ok);
   EXPECT_DOUBLE_EQ(kept.seen.ms.matching, 7.0);
 }
@@ -103,11 +105,11 @@ TEST(HybridRegistration, FewPhotometricInliersHandOverWhenTheGeometricPathRegist
 TEST(HybridRegistration, PhotometricFailuresFallBackOnlyWhenAllowed) {
   auto c = make(500, Status::TooFewMatches, 0, Status::LargeResiduals);
   const auto r = run(c);
-  EXPECT_EQ(r.seen.path, "geometric");  // the geometric result, whatever it is
+  EXPECT_EQ(hrgbd::toString(r.seen.path), "geometric");  // the geometric result, whatever it is
   EXPECT_EQ(r.status, Status::LargeResiduals);
   auto d = make(500, Status::TooFewMatches, 0, Status::Ok, false);
   const auto no = run(d);
-  EXPECT_EQ(no.seen.path, "photometric");
+  EXPECT_EQ(hrgbd::toString(no.seen.path), "photometric");
   EXPECT_EQ(no.status, Status::TooFewMatches);
   EXPECT_EQ(d.geometric->aligned, 0);
 }

@@ -75,11 +75,11 @@ TEST(RgbdOdometry, DepthOnlyAlwaysTakesTheGeometricPath) {
   p.method = hrgbd::Method::DepthOnly;
   hrgbd::RgbdOdometry odo(p);
   const auto first = odo.processObservation(*frames[0]);
-  EXPECT_EQ(first.path, "geometric");
+  EXPECT_EQ(hrgbd::toString(first.path), "geometric");
   EXPECT_EQ(first.orb_features, 0u);  // ORB is not even run
   EXPECT_GT(first.features, 100u);
   const auto second = odo.processObservation(*frames[1]);
-  EXPECT_EQ(second.path, "geometric");
+  EXPECT_EQ(hrgbd::toString(second.path), "geometric");
   EXPECT_EQ(second.status, FrameResult::Status::Ok) << second.detail;
 }
 
@@ -91,7 +91,8 @@ TEST(RgbdOdometry, HybridSwitchesPathsOnTheOrbFeatureCount) {
     hrgbd::RgbdOdometry odo(p);
     for (std::size_t i = 0; i < 4; ++i) {
       const auto r = odo.processObservation(*frames[i]);
-      EXPECT_EQ(r.path, path) << sequence << " frame " << i << ": " << r.orb_features << " ORB";
+      EXPECT_EQ(hrgbd::toString(r.path), path)
+          << sequence << " frame " << i << ": " << r.orb_features << " ORB";
       EXPECT_TRUE(r.registered()) << sequence << " frame " << i << ": " << r.detail;
       EXPECT_EQ(r.orb_features < 50u, std::string(path) == "geometric");
     }
@@ -108,7 +109,7 @@ TEST(RgbdOdometry, GeometricFallbackRescuesPhotometricFailures) {
     odo.processObservation(*frames[0]);
     const auto r = odo.processObservation(*frames[1]);
     EXPECT_EQ(r.registered(), fallback) << r.detail;
-    EXPECT_EQ(r.path, fallback ? "geometric" : "photometric");
+    EXPECT_EQ(hrgbd::toString(r.path), fallback ? "geometric" : "photometric");
   }
 }
 
@@ -124,7 +125,8 @@ TEST(RgbdOdometry, FewPhotometricInliersHandOverToTheGeometricPath) {
     for (std::size_t i = 1; i < 4; ++i) {
       const auto r = odo.processObservation(*frames[i]);
       EXPECT_TRUE(r.registered()) << "frame " << i << ": " << r.detail;
-      EXPECT_EQ(r.path, threshold == 0 ? "photometric" : "geometric") << "frame " << i;
+      EXPECT_EQ(hrgbd::toString(r.path), threshold == 0 ? "photometric" : "geometric")
+          << "frame " << i;
       if (threshold == 0) {
         EXPECT_GT(r.inliers, 100u);
       }

@@ -15,6 +15,10 @@ using Status = hrgbd::FrameResult::Status;
 
 namespace {
 
+// The fake's path: not the default, so that a path the tracker did not copy would show.
+const hrgbd::FramePath kFakePath{hrgbd::FramePath::Sparse::Geometric,
+                                 hrgbd::FramePath::Refined::Prediction};
+
 // Returns the scripted results in order; records the time stamps of the frames it aligned.
 class FakeRegistration : public hrgbd::Registration {
  public:
@@ -29,7 +33,7 @@ class FakeRegistration : public hrgbd::Registration {
       : m_script(std::move(script)), m_log(log) {}
   hrgbd::FrameFeatures prepare(hrgbd::Frame&) override {
     ++m_log.prepared;
-    return {"fake", 7, 7, {}};
+    return {kFakePath, 7, 7, {}};
   }
   hrgbd::RegistrationResult align(hrgbd::Frame& cur, hrgbd::Frame& ref) override {
     m_log.aligned.emplace_back(cur.image.t, ref.image.t);
@@ -94,7 +98,7 @@ TEST(Tracker, ChainsEachStepOntoTheReference) {
   ASSERT_EQ(run.results.size(), 4u);
   EXPECT_EQ(run.results[0].status, Status::FirstFrame);
   EXPECT_EQ(run.results[0].pose, mrpt::poses::CPose3D());
-  EXPECT_EQ(run.results[0].path, "fake");
+  EXPECT_EQ(run.results[0].path, kFakePath);  // what the registration said
   EXPECT_EQ(run.results[0].features, 7u);
   // G_n = G_ref T (eq. 8), the reference being the previous frame while every step registers.
   const auto g1 = hrgbd::toPose(step(0.1).T);
@@ -150,7 +154,7 @@ TEST(Tracker, BadInputIsFlaggedWithoutCallingTheRegistration) {
   no_depth->hasRangeImage = false;
   const auto bad = odo.processObservation(*no_depth);
   EXPECT_EQ(bad.status, Status::BadInput);
-  EXPECT_EQ(bad.path, "none");
+  EXPECT_EQ(bad.path, hrgbd::FramePath{});  // none, no refinement
   EXPECT_FALSE(bad.detail.empty());
   EXPECT_EQ(log.prepared, 2);
   EXPECT_EQ(log.aligned.size(), 1u);

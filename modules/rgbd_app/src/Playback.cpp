@@ -13,6 +13,7 @@
 #include "rgbd_core/OutputFile.h"
 #include "rgbd_eval/EvalPlot.h"
 #include "rgbd_eval/Evaluate.h"
+#include "rgbd_io/Grabber.h"
 #include "rgbd_io/RawlogWriter.h"
 #include "rgbd_io/openFrameSource.h"
 
@@ -216,8 +217,17 @@ PlaybackSummary runPlayback(const PlaybackOptions& opt, std::ostream& log) {
   const auto max_frames = opt.max_frames > 0 ? static_cast<std::size_t>(opt.max_frames) : 0;
   ProgressParams progress;  // frameProgress() may count a rawlog's frames: only when shown
   if (opt.progress) progress = frameProgress(*source, max_frames, opt.progress_label);
-  const auto sinks = makeSinks(job, *source, opt.progress ? &progress : nullptr);
-  FrameLoop loop(*source, std::move(odometry), sinks.list(), max_frames);
+  // a sensor, or a recording played as one, through the sensor's grabber: it drops the frames
+  // that arrive while the tracker is behind
+  std::unique_ptr<Grabber> grabber;
+  if (opt.realtime || job.input == "openni2") {
+    const double rate = job.input == "openni2" ? 0 : 1;
+    grabber = std::make_unique<Grabber>(std::move(source), true, rate);
+    log << "played as a sensor: frames on their time stamps, late ones dropped\n";
+  }
+  FrameSource& frames = grabber ? *grabber : *source;
+  const auto sinks = makeSinks(job, frames, opt.progress ? &progress : nullptr);
+  FrameLoop loop(frames, std::move(odometry), sinks.list(), max_frames);
   if (job.slam.enabled) loop.setSlam(std::make_unique<KeyframeSlam>(job.slam, params));
   loop.run();
   loop.finish(log);
@@ -227,6 +237,10 @@ PlaybackSummary runPlayback(const PlaybackOptions& opt, std::ostream& log) {
   }
 
   auto sum = std::move(sinks.summary->summary());
+  if (grabber) {
+    sum.dropped = grabber->dropped();
+    log << "dropped: " << sum.dropped << " frames (the tracker was behind)\n";
+  }
   sum.map_points = sinks.map ? sinks.map->map().size() : 0;
   sum.slam = job.slam.enabled;
   if (sum.slam) {
@@ -237,7 +251,7 @@ PlaybackSummary runPlayback(const PlaybackOptions& opt, std::ostream& log) {
       sum.loops.push_back(
           {traj.at(slam.loops[i].first).t, traj.at(slam.loops[i].second).t, slam.loop_measured[i]});
   }
-  evaluate(*source, sinks.trajectory->trajectory(), opt.plot,
+  evaluate(frames, sinks.trajectory->trajectory(), opt.plot,
            job.input + " (" + toString(job.odometry.method) + (sum.slam ? ", SLAM" : "") + ")", sum,
            log);
   return sum;

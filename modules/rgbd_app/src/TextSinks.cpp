@@ -62,15 +62,16 @@ void TrajectorySink::save(const std::string& path, const std::string& comment) c
 }
 
 CsvSink::CsvSink(const std::string& path) : m_file(path, "CSV") {
-  m_file.stream() << "timestamp,status,path,orb_features,features,matches,inliers,scale_m,"
+  m_file.stream() << "timestamp,status,path,refined,orb_features,features,matches,inliers,scale_m,"
                      "ms_prepare,ms_features,ms_matching,ms_estimation,ms_refine,ms_total,detail\n";
   m_file.flush();
 }
 
 void CsvSink::add(const mrpt::obs::CObservation3DRangeScan& obs, const FrameResult& r) {
-  m_file.stream() << formatFrameTime(obs.timestamp) << "," << toString(r.status) << "," << r.path
-                  << "," << r.orb_features << "," << r.features << "," << r.matches << ","
-                  << r.inliers << "," << std::fixed << std::setprecision(5) << r.scale << ","
+  m_file.stream() << formatFrameTime(obs.timestamp) << "," << toString(r.status) << ","
+                  << toString(r.path.sparse) << "," << toString(r.path.refined) << ","
+                  << r.orb_features << "," << r.features << "," << r.matches << "," << r.inliers
+                  << "," << std::fixed << std::setprecision(5) << r.scale << ","
                   << std::setprecision(3) << r.ms.prepare << "," << r.ms.features << ","
                   << r.ms.matching << "," << r.ms.estimation << "," << r.ms.refine << ","
                   << r.ms.total << ",\"" << r.detail << "\"\n";

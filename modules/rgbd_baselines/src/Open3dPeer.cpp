@@ -33,14 +33,14 @@ class Open3dPeer : public Registration {
   }
 
   FrameFeatures prepare(Frame& frame) override {
-    FrameFeatures seen{"dense", 0, 0, {}};
+    FrameFeatures seen{{FramePath::Sparse::Peer}, 0, 0, {}};
     timed(seen.ms.features, [&] { rgbdImage(frame); });
     return seen;
   }
 
   RegistrationResult align(Frame& cur, Frame& ref) override {
     RegistrationResult r;
-    r.seen = {"dense", 0, 0, {}};
+    r.seen = {{FramePath::Sparse::Peer}, 0, 0, {}};
     auto source = timed(r.seen.ms.features, [&] { return rgbdImage(cur); });
     auto target = timed(r.seen.ms.features, [&] { return rgbdImage(ref); });
     const auto& c = cur.image.cam;

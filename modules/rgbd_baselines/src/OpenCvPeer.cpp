@@ -27,14 +27,14 @@ class OpenCvPeer : public Registration {
   // The pyramids (and normals, for ICP) of each frame are made once, as the sample does with
   // its OdometryFrame objects.
   FrameFeatures prepare(Frame& frame) override {
-    FrameFeatures seen{"dense", 0, 0, {}};
+    FrameFeatures seen{{FramePath::Sparse::Peer}, 0, 0, {}};
     timed(seen.ms.features, [&] { odometryFrame(frame); });
     return seen;
   }
 
   RegistrationResult align(Frame& cur, Frame& ref) override {
     RegistrationResult r;
-    r.seen = {"dense", 0, 0, {}};
+    r.seen = {{FramePath::Sparse::Peer}, 0, 0, {}};
     auto src = timed(r.seen.ms.features, [&] { return odometryFrame(cur); });
     auto dst = timed(r.seen.ms.features, [&] { return odometryFrame(ref); });
     cv::Mat Rt;  // maps source (current) points into the destination (reference) frame

@@ -1,5 +1,6 @@
 #include "rgbd_bench/Benchmark.h"
 
+#include <mrpt/config/CConfigFileMemory.h>
 #include <sys/utsname.h>
 
 #include <algorithm>
@@ -8,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <map>
 #include <sstream>
 #include <thread>
 
@@ -106,16 +108,28 @@ std::vector<std::string> benchmarkMethods() {
   names.push_back("hybrid_slam");
   names.push_back("hybrid_odometry");
   names.push_back("hybrid_paper");
+  names.push_back("rgb_only_paper");
+  names.push_back("depth_only_paper");
+  names.push_back("hybrid_realtime");
   return names;
 }
 
 namespace {
 
-/** [Benchmark] from `config_file`, its paths resolved against the file's folder. */
-BenchmarkParams loadBenchmarkParams(const std::string& config_file) {
-  const auto cfg = loadChecked(config_file);
+/** [Benchmark] from `config_file` with `overrides` (key -> value) over its keys, its paths
+ * resolved against the file's folder. */
+BenchmarkParams loadBenchmarkParams(const std::string& config_file,
+                                    const std::map<std::string, std::string>& overrides) {
+  const auto file = loadChecked(config_file);
+  // the section's keys copied to memory and overridden there (a CConfigFile written to would
+  // write itself back to the file)
+  mrpt::config::CConfigFileMemory cfg;
+  std::vector<std::string> keys;
+  file->getAllKeys("Benchmark", keys);
+  for (const auto& key : keys) cfg.write("Benchmark", key, file->read_string("Benchmark", key, ""));
+  for (const auto& [key, value] : overrides) cfg.write("Benchmark", key, value);
   BenchmarkParams p;
-  p.loadFromConfigFile(*cfg, "Benchmark");
+  p.loadFromConfigFile(cfg, "Benchmark");
   const auto base = iniFolder(config_file);
   p.cache_folder = resolvePath(base, p.cache_folder);
   p.output_folder = resolvePath(base, p.output_folder);
@@ -141,7 +155,11 @@ BenchRun runOne(const BenchSequence& seq, const std::string& method, const std::
   opt.method = method;
   if (method == "hybrid_slam") opt.method = "hybrid", opt.slam = true;
   if (method == "hybrid_odometry") opt.method = "hybrid", opt.no_slam = true;
-  if (method == "hybrid_paper") opt.method = "hybrid", opt.config = p.paper_config;
+  const std::string paper = "_paper";
+  if (method.size() > paper.size() &&
+      method.compare(method.size() - paper.size(), paper.size(), paper) == 0)
+    opt.method = method.substr(0, method.size() - paper.size()), opt.config = p.paper_config;
+  if (method == "hybrid_realtime") opt.method = "hybrid", opt.realtime = true;
   opt.max_frames = p.max_frames;
   opt.progress = progress;
   opt.progress_label = seq.name + " " + method;
@@ -250,9 +268,10 @@ std::vector<BenchFigure> plotRealSequences(const BenchmarkReport& report, const 
 }  // namespace
 
 BenchmarkReport runBenchmark(const std::string& config_file, const std::vector<std::string>& extra,
-                             std::ostream& log, bool progress) {
+                             std::ostream& log, bool progress,
+                             const std::map<std::string, std::string>& overrides) {
   const auto start = std::chrono::steady_clock::now();
-  const auto p = loadBenchmarkParams(config_file);
+  const auto p = loadBenchmarkParams(config_file, overrides);
   checkResultPaths(p, config_file, extra);
   BenchmarkReport report;
   report.config_file = config_file;

@@ -12,8 +12,8 @@
 #include "rgbd_core/Config.h"
 #include "rgbd_core/JobPaths.h"
 #include "rgbd_core/Trajectory.h"
+#include "rgbd_io/Grabber.h"
 #include "rgbd_io/openFrameSource.h"
-#include "rgbd_live/Grabber.h"
 #include "rgbd_live/LiveViewer.h"
 #include "rgbd_live/ViewerSink.h"
 
@@ -86,7 +86,7 @@ void runControls(FrameLoop& loop, LiveSinks& sinks, LiveViewer& viewer, const Gr
       ended = Clock::now();
       if (loop.slam()) loop.finish(log);  // the last loops and optimisation, shown
       log << "finished: " << loop.frames() << " frames, map " << sinks.map.map().size()
-          << " points, " << grabber.dropped() << " dropped by the grabber" << std::endl;
+          << " points, " << grabber.dropped() << " dropped (the tracker was behind)" << std::endl;
       viewer.status("end of data: [s] save  [q] quit");
     }
   }
@@ -95,6 +95,8 @@ void runControls(FrameLoop& loop, LiveSinks& sinks, LiveViewer& viewer, const Gr
 }  // namespace
 
 void runLive(const LiveOptions& opt, std::ostream& log) {
+  if (opt.realtime && opt.rate <= 0)
+    throw UsageError("--realtime plays frames on their time stamps: it needs --rate > 0");
   const auto cfg = loadChecked(opt.config);
   OdometryParams params;
   params.loadFromConfigFile(*cfg, "Odometry");
@@ -111,7 +113,10 @@ void runLive(const LiveOptions& opt, std::ostream& log) {
   checkJobPaths(inputs, savedFiles(opt.save_prefix));
   log << "input: " << source->describe() << "\nmethod: " << toString(params.method) << std::endl;
   LiveViewer viewer("hybrid-rgbd-odometry live: " + opt.input);
-  Grabber grabber(std::move(source), opt.input == "openni2", opt.rate);
+  // a sensor delivers at its own pace and drops what the tracker is too slow for; a recording
+  // does the same with --realtime, else it waits for the tracker
+  const bool sensor = opt.input == "openni2";
+  Grabber grabber(std::move(source), sensor || opt.realtime, sensor ? 0 : opt.rate);
 
   LiveSinks sinks(map_params, viewer, slam.enabled);
   FrameLoop loop(grabber, std::move(odometry), sinks.list(),

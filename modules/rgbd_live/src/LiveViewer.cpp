@@ -117,8 +117,9 @@ void LiveViewer::update(const mrpt::obs::CObservation3DRangeScan& obs, const Fra
   if (img.channels() == 1) cv::cvtColor(img, img, cv::COLOR_GRAY2BGR);
   if (obs.hasIntensityImage) {
     const auto& cam = obs.cameraParamsIntensity;
-    const cv::Scalar colour =
-        r.path == "geometric" ? cv::Scalar(255, 0, 255) : cv::Scalar(0, 255, 0);
+    const cv::Scalar colour = r.path.sparse == FramePath::Sparse::Geometric
+                                  ? cv::Scalar(255, 0, 255)
+                                  : cv::Scalar(0, 255, 0);
     for (const auto& p : r.inlier_points)
       if (p.z() > 0)
         cv::circle(img,
@@ -146,10 +147,10 @@ void LiveViewer::update(const mrpt::obs::CObservation3DRangeScan& obs, const Fra
   m_win->unlockAccess3DScene();
 
   char line[256];
-  std::snprintf(line, sizeof line,
-                "frame %zu%s  path %s  %s  inliers %zu/%zu  %.1f fps  map %zu pts", path.size(),
-                m_loop_count ? ("  loops " + std::to_string(m_loop_count)).c_str() : "",
-                r.path.c_str(), toString(r.status), r.inliers, r.matches, fps, pts.size());
+  std::snprintf(
+      line, sizeof line, "frame %zu%s  path %s  %s  inliers %zu/%zu  %.1f fps  map %zu pts",
+      path.size(), m_loop_count ? ("  loops " + std::to_string(m_loop_count)).c_str() : "",
+      toString(r.path).c_str(), toString(r.status), r.inliers, r.matches, fps, pts.size());
   m_win->addTextMessage(10, -40, line, 1,
                         font(r.registered() ? mrpt::img::TColorf(0.3f, 1.f, 0.3f)
                                             : mrpt::img::TColorf(1.f, 0.3f, 0.3f)));

@@ -83,6 +83,7 @@ RegistrationResult DenseRefined::align(Frame& cur, Frame& ref) {
     addDerivatives(*ref.dense, m_params);  // on its first use as a reference
     return refineDense(*cur.dense, *ref.dense, starts, m_params, cur_readout, ref_readout);
   });
+  r.seen.path.refined = FramePath::Refined::Refused;  // until a start is taken below
   if (!d.ok) {
     if (!r.ok()) r.detail += "; " + d.detail;
     return r;  // too little to refine with: the sparse estimate stands (or the failure)
@@ -125,7 +126,9 @@ RegistrationResult DenseRefined::align(Frame& cur, Frame& ref) {
     r.detail = "dense refinement moved the start that fitted best too far: not trusted";
     return r;
   }
-  r.seen.path = r.ok() && start == 0 ? r.seen.path + "+dense" : "dense";
+  // start 0 is the sparse fit's when there was one, else the prediction's
+  r.seen.path.refined =
+      r.ok() && start == 0 ? FramePath::Refined::Sparse : FramePath::Refined::Prediction;
   r.T = T;
   r.status = FrameResult::Status::Ok;
   return r;

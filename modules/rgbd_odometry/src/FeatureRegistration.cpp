@@ -46,7 +46,7 @@ RegistrationResult PhotometricRegistration::align(Frame& cur, Frame& ref) {
   StageTimes ms = prepare(cur).ms;  // no-op for prepared frames
   ms += prepare(ref).ms;
   auto r = matchAndFit(*cur.orb, *ref.orb, cv::NORM_HAMMING, m_max_hamming, m_estimate);
-  r.seen.path = "photometric";
+  r.seen.path.sparse = FramePath::Sparse::Photometric;
   r.seen.orb_features = orbCount(cur);
   return withTimes(std::move(r), ms);
 }
@@ -57,7 +57,7 @@ GeometricRegistration::GeometricRegistration(const GeometricParams& geometric,
 
 FrameFeatures GeometricRegistration::prepare(Frame& frame) {
   FrameFeatures seen;
-  seen.path = "geometric";
+  seen.path.sparse = FramePath::Sparse::Geometric;
   seen.orb_features = orbCount(frame);
   seen.features = geometricOf(frame, m_params, seen.ms).features.size();
   return seen;
@@ -70,7 +70,7 @@ RegistrationResult GeometricRegistration::align(Frame& cur, Frame& ref) {
   const GeometricFeatures& dst = geometricOf(ref, m_params, ms);
   auto r = matchAndFit(src.features, dst.features, cv::NORM_L2, m_params.max_descriptor_distance,
                        msseEstimator(m_msse));
-  r.seen.path = "geometric";
+  r.seen.path.sparse = FramePath::Sparse::Geometric;
   r.seen.orb_features = orbCount(cur);
   r.seen.ms += ms;
   if (!r.ok() || m_params.refine_iterations == 0) return r;

@@ -36,6 +36,44 @@ StageTimes& StageTimes::operator+=(const StageTimes& o) {
   return *this;
 }
 
+const char* toString(FramePath::Sparse s) {
+  using S = FramePath::Sparse;
+  switch (s) {
+    case S::None:
+      return "none";
+    case S::Photometric:
+      return "photometric";
+    case S::Geometric:
+      return "geometric";
+    case S::Peer:
+      return "peer";
+  }
+  return "?";
+}
+
+const char* toString(FramePath::Refined r) {
+  using R = FramePath::Refined;
+  switch (r) {
+    case R::None:
+      return "none";
+    case R::Sparse:
+      return "sparse";
+    case R::Prediction:
+      return "prediction";
+    case R::Refused:
+      return "refused";
+  }
+  return "?";
+}
+
+std::string toString(const FramePath& p) {
+  std::string s = toString(p.sparse);
+  if (p.refined == FramePath::Refined::Sparse) s += "+dense";
+  if (p.refined == FramePath::Refined::Prediction) s += "+dense(prediction)";
+  if (p.refined == FramePath::Refined::Refused) s += "+dense(refused)";
+  return s;
+}
+
 const char* toString(FrameResult::Status s) {
   using S = FrameResult::Status;
   switch (s) {
@@ -105,7 +143,7 @@ FrameResult RgbdOdometry::track(const mrpt::obs::CObservation3DRangeScan& obs) {
   try {
     cur.image = timed(r.ms.prepare, [&] { return prepareRgbdImage(obs); });
   } catch (const std::exception& e) {
-    r.path = "none";
+    r.path = {};                                                                // none
     return predict(std::move(r), FrameResult::Status::BadInput, errorText(e));  // no backtrace
   }
   report(m_registration->prepare(cur), r);

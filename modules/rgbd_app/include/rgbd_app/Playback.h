@@ -26,6 +26,9 @@ struct PlaybackOptions {
   std::string plot;        //!< evaluation figure, .png/.svg/.pdf ("" = none)
   int max_frames = 0;      //!< stop after this many frames (0 = all)
   bool progress = true;    //!< progress line on stderr (rgbd_core/Progress.h)
+  /** a recording played as a sensor (rgbd_io/Grabber.h): frames on their time stamps, those
+   * arriving while the tracker is behind dropped and counted; always so for "openni2" */
+  bool realtime = false;
   // Map and MRPT outputs ("" = from [Playback], where "" = none)
   std::string output_rawlog;  //!< the frames with their estimated pose as sensorPose
   std::string simplemap;      //!< CSimpleMap of (pose, frame) for observations2map
@@ -42,6 +45,7 @@ struct PlaybackOptions {
 /** Summary of a run. */
 struct PlaybackSummary {
   std::size_t frames = 0, registered = 0;
+  std::size_t dropped = 0;  //!< frames the grabber dropped, the tracker being behind (realtime)
   std::vector<FrameResult> results;
   bool evaluated = false;
   EvalResult eval;  //!< valid when evaluated (toText() / toJson() format it)

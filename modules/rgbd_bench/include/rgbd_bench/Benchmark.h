@@ -5,6 +5,7 @@
  * the same frames; the report gives ATE (unaligned mean, the paper's metric, and aligned RMSE),
  * RPE, time per frame, path shares and failures as markdown. `rgbd-benchmark` is a thin main. */
 #include <iosfwd>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -15,9 +16,11 @@
 
 namespace hrgbd {
 
-/** The benchmark's method names: every [Odometry] method, and variants of hybrid: `hybrid_slam`
- * and `hybrid_odometry` (the SLAM mode on / off, whatever [Slam] says) and `hybrid_paper` (the
- * configuration `paper_config`, the paper's pipeline as published). */
+/** The benchmark's method names: every [Odometry] method, and variants: `hybrid_slam` and
+ * `hybrid_odometry` (the SLAM mode on / off, whatever [Slam] says), `hybrid_paper`,
+ * `rgb_only_paper` and `depth_only_paper` (the configuration `paper_config`, the paper's pipeline
+ * as published), and `hybrid_realtime` (the configuration as it is, played as a sensor at the
+ * recorded rate: late frames dropped, PlaybackOptions::realtime). */
 std::vector<std::string> benchmarkMethods();
 
 /** INI section [Benchmark]. Lists are separated by spaces; paths are relative to the INI. */
@@ -44,7 +47,9 @@ struct BenchmarkParams : public Params<BenchmarkParams> {
 
   template <class P, class V>
   static void declare(P& p, V& v) {
-    HRGBD_PARAM(methods, "any [Odometry] method, hybrid_slam|odometry|paper",
+    HRGBD_PARAM(methods,
+                "any [Odometry] method, hybrid_slam|odometry|paper|realtime, "
+                "rgb_only_paper, depth_only_paper",
                 OneOf{benchmarkMethods()}, NonEmpty{});
     HRGBD_PARAM(sim_scenes, "scene types, each near (~1 m)", OneOf{sim::sceneTypes()});
     HRGBD_PARAM(sim_far, "also far (~2 m) texture, structure, structure_texture");
@@ -101,9 +106,11 @@ std::vector<BenchSequence> prepareSequences(const BenchmarkParams& params,
  * every method on each with runPlayback(), on one thread. Runs that throw are recorded. Each real
  * sequence gets a figure of all methods against its ground truth (plotEvaluations()) in
  * <output_folder>/plots/; one that cannot be drawn is recorded in the report. `progress`: each
- * run shows its progress on stderr (rgbd_core/Progress.h), labelled "<sequence> <method>". */
+ * run shows its progress on stderr (rgbd_core/Progress.h), labelled "<sequence> <method>".
+ * `overrides`: [Benchmark] keys set over the file's (the command line's), checked alike. */
 BenchmarkReport runBenchmark(const std::string& config_file, const std::vector<std::string>& extra,
-                             std::ostream& log, bool progress = true);
+                             std::ostream& log, bool progress = true,
+                             const std::map<std::string, std::string>& overrides = {});
 
 /** The report as markdown: one table per metric, timing, paths, failures, targets, figures. */
 std::string toMarkdown(const BenchmarkReport& report);

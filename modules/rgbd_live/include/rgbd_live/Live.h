@@ -12,6 +12,9 @@ struct LiveOptions {
   std::string config;             //!< INI file ("" = defaults); [Odometry], [Map], [OpenNI2]
   std::string input = "openni2";  //!< "openni2", a rawlog or a TUM folder
   double rate = 1.0;              //!< recorded sources: x recorded speed; 0 = as fast as possible
+  /** recorded sources played as a sensor: frames on their time stamps (x `rate`), those that
+   * arrive while the tracker is behind dropped, exactly as the sensor's grabber does */
+  bool realtime = false;
   std::string save_prefix = "live_";  //!< [s] writes <prefix>map.ply, map.3Dscene, trajectory.txt
   /** < 0: keep the window until closed or [q]; >= 0: close this many seconds after the data ends
    * (scripts and the Xvfb test). */

@@ -1,4 +1,4 @@
-#include "rgbd_live/Grabber.h"
+#include "rgbd_io/Grabber.h"
 
 #include <chrono>
 
@@ -6,10 +6,11 @@
 
 namespace hrgbd {
 
-Grabber::Grabber(std::unique_ptr<FrameSource> source, bool live, double rate)
+Grabber::Grabber(std::unique_ptr<FrameSource> source, bool drop, double rate)
     : m_source(std::move(source)),
       m_description(m_source->describe()),
-      m_live(live),
+      m_ground_truth(m_source->groundTruth()),
+      m_drop(drop),
       m_rate(rate),
       m_thread([this] { run(); }) {}
 
@@ -28,7 +29,7 @@ void Grabber::run() {
   double t0 = -1;
   try {
     while (auto obs = m_source->next()) {
-      if (m_rate > 0 && !m_live) {
+      if (m_rate > 0) {
         const double t = timestampSeconds(*obs);
         if (t0 < 0) t0 = t;
         std::this_thread::sleep_until(start +
@@ -36,13 +37,14 @@ void Grabber::run() {
                                           std::chrono::duration<double>((t - t0) / m_rate)));
       }
       std::unique_lock<std::mutex> lock(m_mutex);
-      if (m_live && m_queue.size() >= 2) {
+      if (m_drop && m_queue.size() >= 2) {
         m_queue.pop_front();
         ++m_dropped;
       }
       m_changed.wait(lock, [&] { return m_stop || m_queue.size() < 2; });
       if (m_stop) return;
       m_queue.push_back(obs);
+      m_skipped = m_source->stats().skipped_objects;
       m_changed.notify_all();
     }
   } catch (...) {
@@ -50,6 +52,7 @@ void Grabber::run() {
     m_error = std::current_exception();
   }
   std::lock_guard<std::mutex> lock(m_mutex);
+  m_skipped = m_source->stats().skipped_objects;
   m_ended = true;
   m_changed.notify_all();
 }
@@ -57,6 +60,7 @@ void Grabber::run() {
 mrpt::obs::CObservation3DRangeScan::Ptr Grabber::next() {
   std::unique_lock<std::mutex> lock(m_mutex);
   m_changed.wait(lock, [&] { return !m_queue.empty() || m_ended; });
+  m_stats.skipped_objects = m_skipped;
   if (m_queue.empty()) {
     if (m_error) std::rethrow_exception(m_error);
     return nullptr;
