@@ -191,6 +191,26 @@ TEST(Slam, ABoundedBacklogKeepsEveryKeyframesLoopSearch) {
   EXPECT_LT(kept, 0.6e6);
 }
 
+TEST(Slam, LiveTheTrackingNeverWaitsForTheLoopSearch) {
+  // the same keyframe flood, played as a sensor: where the offline run waited (16 times
+  // measured), the back end skips the loop search of a keyframe that finds the backlog full;
+  // every keyframe is still a node, and loops still close
+  auto o = options("backlog_live", true,
+                   "[Odometry]\nkeyframe_max_translation = 0.001\n[Slam]\nmax_backlog = 1\n");
+  o.max_frames = 25;
+  o.realtime = true;
+  std::ostringstream log;
+  const auto s = hrgbd::runPlayback(o, log);
+  EXPECT_EQ(s.slam_stats.backlog_waits, 0u) << log.str();
+  EXPECT_EQ(s.slam_stats.waited_ms, 0.0);
+  const auto keyframes =
+      std::count_if(s.results.begin(), s.results.end(), [](const auto& r) { return r.keyframe; });
+  EXPECT_EQ(s.slam_stats.keyframes, static_cast<std::size_t>(keyframes));
+  EXPECT_EQ(s.frames, 25u);  // max_frames counts the frames tracked, not those dropped
+  EXPECT_GE(s.slam_stats.loops_accepted, 1u) << log.str();
+  EXPECT_NE(log.str().find("loop searches skipped"), std::string::npos) << log.str();
+}
+
 TEST(Slam, AKeyframeTakenAfterFailuresIsANodeThatLoopsPlace) {
   // steps over 1.5 cm from the keyframe are flagged, and after two flagged frames in a row the
   // tracker takes a flagged frame as its keyframe, at a predicted pose: such keyframes are nodes

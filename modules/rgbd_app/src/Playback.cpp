@@ -228,7 +228,9 @@ PlaybackSummary runPlayback(const PlaybackOptions& opt, std::ostream& log) {
   FrameSource& frames = grabber ? *grabber : *source;
   const auto sinks = makeSinks(job, frames, opt.progress ? &progress : nullptr);
   FrameLoop loop(frames, std::move(odometry), sinks.list(), max_frames);
-  if (job.slam.enabled) loop.setSlam(std::make_unique<KeyframeSlam>(job.slam, params));
+  // live, the back end skips work rather than make the tracking wait (and drop frames)
+  if (job.slam.enabled)
+    loop.setSlam(std::make_unique<KeyframeSlam>(job.slam, params, grabber != nullptr));
   loop.run();
   loop.finish(log);
   if (!job.graph.empty()) {

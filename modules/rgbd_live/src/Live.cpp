@@ -122,7 +122,8 @@ void runLive(const LiveOptions& opt, std::ostream& log) {
   FrameLoop loop(grabber, std::move(odometry), sinks.list(),
                  opt.max_frames > 0 ? static_cast<std::size_t>(opt.max_frames) : 0);
   // live, the map snaps to the optimised poses after each optimisation
-  if (slam.enabled) loop.setSlam(std::make_unique<KeyframeSlam>(slam, params), true);
+  if (slam.enabled)
+    loop.setSlam(std::make_unique<KeyframeSlam>(slam, params, sensor || opt.realtime), true);
   runControls(loop, sinks, viewer, grabber, opt, log);
   if (opt.hold_seconds >= 0) sinks.save(opt.save_prefix, log);
 }

@@ -78,12 +78,14 @@ std::string toText(const SlamStats& s) {
       << " dropped as inconsistent; loop search median " << percentile(s.search_ms, 0.5)
       << " ms per keyframe, " << s.optimizations << " optimisations, median "
       << percentile(s.optimize_ms, 0.5) << " ms; largest backlog " << s.largest_backlog
-      << " keyframes, tracking waited " << s.backlog_waits << " times\n";
+      << " keyframes, tracking waited " << s.backlog_waits << " times (" << s.waited_ms << " ms), "
+      << s.searches_skipped << " loop searches skipped\n";
   return out.str();
 }
 
-KeyframeSlam::KeyframeSlam(const SlamParams& params, const OdometryParams& odometry)
+KeyframeSlam::KeyframeSlam(const SlamParams& params, const OdometryParams& odometry, bool live)
     : m_params(params),
+      m_live(live),
       m_odometry(odometry),
       m_registration(makeRegistration(loopRegistration(odometry, params))) {
   if (!m_params.vocabulary.empty()) try {
@@ -132,9 +134,18 @@ bool KeyframeSlam::add(FrameResult& r, RgbdOdometry& tracker) {
       {
         std::unique_lock<std::mutex> lock(m_mutex);
         const auto backlog = static_cast<std::size_t>(m_params.max_backlog);
-        if (m_queue.size() >= backlog) {
+        if (m_queue.size() >= backlog && m_live) {
+          // the back end drops work, not the tracker: this keyframe is a node and an edge only
+          job.search = false;
+          ++m_stats.searches_skipped;
+        } else if (m_queue.size() >= backlog) {
           ++m_stats.backlog_waits;
-          m_idle.wait(lock, [&] { return m_queue.size() < backlog || m_failed; });
+          double ms = 0;
+          timed(ms, [&] {
+            m_idle.wait(lock, [&] { return m_queue.size() < backlog || m_failed; });
+            return 0;
+          });
+          m_stats.waited_ms += ms;
         }
         // the worker failed: the graph is out of step, no more jobs for it
         if (m_failed) std::rethrow_exception(m_failed);
@@ -214,6 +225,7 @@ void KeyframeSlam::process(Job job) {
   double search_ms = 0;
   std::size_t verified = 0, accepted = 0, by_appearance = 0, appearance_loops = 0;
   timed(search_ms, [&] {
+    if (!job.search) return 0;
     for (const Candidate& c : candidates(id)) {
       ++verified;
       by_appearance += c.by_appearance;

@@ -41,6 +41,10 @@ struct SlamStats {
   std::size_t optimizations = 0;
   std::size_t largest_backlog = 0;  //!< most keyframes ever waiting for the loop search
   std::size_t backlog_waits = 0;    //!< times the tracking waited for it (max_backlog reached)
+  double waited_ms = 0;             //!< [ms] the tracking waited for it, in all
+  /** live: keyframes that joined the graph without a loop search of their own (max_backlog
+   * reached; they are still candidates of later keyframes' searches) */
+  std::size_t searches_skipped = 0;
   /** what the kept keyframes hold (images, features, pyramids), counted as each is added; the
    * references made from the last 8 (KeyframeSlam::reference()) come on top, 3-4 MB each */
   std::size_t kept_bytes = 0;
@@ -50,15 +54,18 @@ struct SlamStats {
 };
 
 /** "SLAM: N keyframes (M MB kept), ... loops ..., search ms median ..., optimisation ms median ...;
- * largest backlog ..., tracking waited ... times\n" */
+ * largest backlog ..., tracking waited ... times (... ms), ... loop searches skipped\n" */
 std::string toText(const SlamStats& s);
 
 class KeyframeSlam {
  public:
   /** Loop candidates are verified with makeRegistration(`odometry`): the product's methods only
    * (throws ConfigError for a baseline or peer). Loads `params.vocabulary` (ConfigError naming
-   * the key and the fault). */
-  KeyframeSlam(const SlamParams& params, const OdometryParams& odometry);
+   * the key and the fault). `live` (a sensor, or a recording played as one): the tracking never
+   * waits for the background loop search; with max_backlog keyframes waiting, a new keyframe
+   * joins the graph without a loop search of its own (SlamStats::searches_skipped). Otherwise
+   * the tracking waits there, and every keyframe is searched. */
+  KeyframeSlam(const SlamParams& params, const OdometryParams& odometry, bool live = false);
   ~KeyframeSlam();
   KeyframeSlam(const KeyframeSlam&) = delete;
   KeyframeSlam& operator=(const KeyframeSlam&) = delete;
@@ -87,6 +94,7 @@ class KeyframeSlam {
     bool first = true;          //!< the first keyframe: no odometry edge
     PoseGraphEdge odometry;     //!< from the previous keyframe
     mrpt::poses::CPose3D pose;  //!< tracker's estimate (the first node only)
+    bool search = true;         //!< false: a node and its odometry edge, no loop search
   };
   struct Place {
     std::size_t keyframe;
@@ -112,6 +120,7 @@ class KeyframeSlam {
   void rethrowWorkerFailure();
 
   SlamParams m_params;
+  bool m_live = false;  //!< the tracking never waits (constructor)
   OdometryParams m_odometry;
   // tracking thread
   std::vector<Place> m_places;                     //!< per frame
