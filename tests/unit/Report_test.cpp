@@ -30,8 +30,11 @@ hrgbd::BenchRun run(const std::string& seq, const std::string& method,
   return r;
 }
 
+// n frames at 30 Hz
 std::vector<hrgbd::FrameResult> repeat(int n, FramePath path, double ms) {
-  return std::vector<hrgbd::FrameResult>(n, frame(path, ms));
+  std::vector<hrgbd::FrameResult> out(n, frame(path, ms));
+  for (int i = 0; i < n; ++i) out[i].t = i / 30.0;
+  return out;
 }
 
 std::vector<hrgbd::FrameResult> join(std::vector<hrgbd::FrameResult> a,
@@ -128,8 +131,15 @@ TEST(Report, RealTimePlaybackReportsDropsAndTheOfflineAte) {
   const auto md = hrgbd::toMarkdown(r);
   EXPECT_TRUE(has(md, "| real/textured | 10 | 1 | 0.0100 | 0.0104 | 10.0 / 10.0 |")) << md;
   EXPECT_TRUE(has(md,
-                  "- real/textured, real-time playback at 30 Hz: 1 frames dropped, ATE 0.0104 "
-                  "m against 0.0100 m offline (target: none dropped, within 5 %): **missed**"))
+                  "- real/textured, real-time playback at its recorded 30.0 Hz: 1 frames "
+                  "dropped, ATE 0.0104 m against 0.0100 m offline (target: none dropped, "
+                  "within 5 %): **missed**"))
       << md;
+  // a real-time run that failed is a missed line, not a missing one
+  r.runs[1].error = "cannot open";
+  EXPECT_TRUE(has(hrgbd::toMarkdown(r),
+                  "- real/textured, real-time playback at its recorded "
+                  "30.0 Hz: no ATE to compare (a run failed or was not "
+                  "evaluated): **missed**"));
   EXPECT_TRUE(has(hrgbd::toCsv(r), "real/textured,hybrid_realtime,9,9,")) << hrgbd::toCsv(r);
 }

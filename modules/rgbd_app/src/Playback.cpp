@@ -222,16 +222,18 @@ PlaybackSummary runPlayback(const PlaybackOptions& opt, std::ostream& log) {
   std::unique_ptr<Grabber> grabber;
   if (opt.realtime || job.input == "openni2") {
     const double rate = job.input == "openni2" ? 0 : 1;
-    grabber = std::make_unique<Grabber>(std::move(source), true, rate);
+    // -n counts the recorded frames here, tracked or dropped: the stretch offline runs cover
+    grabber = std::make_unique<Grabber>(std::move(source), true, rate, max_frames);
     log << "played as a sensor: frames on their time stamps, late ones dropped\n";
   }
   FrameSource& frames = grabber ? *grabber : *source;
   const auto sinks = makeSinks(job, frames, opt.progress ? &progress : nullptr);
-  FrameLoop loop(frames, std::move(odometry), sinks.list(), max_frames);
+  FrameLoop loop(frames, std::move(odometry), sinks.list(), grabber ? 0 : max_frames);
   // live, the back end skips work rather than make the tracking wait (and drop frames)
   if (job.slam.enabled)
     loop.setSlam(std::make_unique<KeyframeSlam>(job.slam, params, grabber != nullptr));
   loop.run();
+  if (grabber) grabber->stop();  // the count of dropped frames ends with the run
   loop.finish(log);
   if (!job.graph.empty()) {
     loop.slam()->graph().save(job.graph);

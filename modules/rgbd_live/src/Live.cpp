@@ -53,7 +53,7 @@ std::vector<JobPath> savedFiles(const std::string& prefix) {
 
 /** Steps the loop between the window's keys ([p] pause, [r] reset, [s] save, [q] quit) until
  * [q], the window is closed, or the hold after the end of the data expires. */
-void runControls(FrameLoop& loop, LiveSinks& sinks, LiveViewer& viewer, const Grabber& grabber,
+void runControls(FrameLoop& loop, LiveSinks& sinks, LiveViewer& viewer, Grabber& grabber,
                  const LiveOptions& opt, std::ostream& log) {
   bool paused = false, finished = false;
   auto ended = Clock::now();
@@ -82,6 +82,7 @@ void runControls(FrameLoop& loop, LiveSinks& sinks, LiveViewer& viewer, const Gr
       continue;
     }
     if (!loop.step()) {
+      grabber.stop();  // the count of dropped frames ends with the data
       finished = true;
       ended = Clock::now();
       if (loop.slam()) loop.finish(log);  // the last loops and optimisation, shown
@@ -95,7 +96,7 @@ void runControls(FrameLoop& loop, LiveSinks& sinks, LiveViewer& viewer, const Gr
 }  // namespace
 
 void runLive(const LiveOptions& opt, std::ostream& log) {
-  if (opt.realtime && opt.rate <= 0)
+  if (opt.realtime && opt.rate <= 0 && opt.input != "openni2")
     throw UsageError("--realtime plays frames on their time stamps: it needs --rate > 0");
   const auto cfg = loadChecked(opt.config);
   OdometryParams params;

@@ -36,6 +36,7 @@ PhotometricRegistration::PhotometricRegistration(const OrbParams& orb, int max_h
 
 FrameFeatures PhotometricRegistration::prepare(Frame& frame) {
   FrameFeatures seen;
+  seen.path.sparse = FramePath::Sparse::Photometric;
   if (!frame.orb)
     frame.orb = timed(seen.ms.features, [&] { return extractOrbFeatures(frame.image, m_orb); });
   seen.orb_features = seen.features = frame.orb->size();

@@ -134,11 +134,14 @@ bool KeyframeSlam::add(FrameResult& r, RgbdOdometry& tracker) {
       {
         std::unique_lock<std::mutex> lock(m_mutex);
         const auto backlog = static_cast<std::size_t>(m_params.max_backlog);
-        if (m_queue.size() >= backlog && m_live) {
+        // live, the keyframes waiting without a search of their own cost the worker little
+        const auto searches = static_cast<std::size_t>(
+            std::count_if(m_queue.begin(), m_queue.end(), [](const Job& j) { return j.search; }));
+        if (searches >= backlog && m_live) {
           // the back end drops work, not the tracker: this keyframe is a node and an edge only
           job.search = false;
           ++m_stats.searches_skipped;
-        } else if (m_queue.size() >= backlog) {
+        } else if (!m_live && m_queue.size() >= backlog) {
           ++m_stats.backlog_waits;
           double ms = 0;
           timed(ms, [&] {

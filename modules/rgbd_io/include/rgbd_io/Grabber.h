@@ -21,11 +21,16 @@ namespace hrgbd {
  * - otherwise the grabber waits for the consumer: no frame is lost.
  * With `rate` > 0 the frames are delivered on their time stamps, at `rate` times the recorded
  * speed (give 0 for a sensor, which delivers at its own pace); `rate` = 0 reads as fast as the
- * source gives them. */
+ * source gives them. Nothing is read before the consumer's first next(), whose time is the first
+ * frame's: the consumer's own setup drops nothing. `max_frames` > 0 reads at most that many
+ * frames of the source (delivered or dropped). */
 class Grabber : public FrameSource {
  public:
-  Grabber(std::unique_ptr<FrameSource> source, bool drop, double rate);
+  Grabber(std::unique_ptr<FrameSource> source, bool drop, double rate, std::size_t max_frames = 0);
   ~Grabber() override;
+  /** Stops reading (the consumer is done): dropped() no longer changes; next() then gives what
+   * is queued, then nullptr. */
+  void stop();
   /** The next queued frame (waits for one), nullptr at the end of the data. Rethrows the
    * source's error. */
   mrpt::obs::CObservation3DRangeScan::Ptr next() override;
@@ -43,10 +48,12 @@ class Grabber : public FrameSource {
   Trajectory m_ground_truth;
   bool m_drop;
   double m_rate;
+  std::size_t m_max_frames;
   mutable std::mutex m_mutex;
   std::condition_variable m_changed;
   std::deque<mrpt::obs::CObservation3DRangeScan::Ptr> m_queue;
   bool m_ended = false, m_stop = false;
+  bool m_asked = false;  //!< the consumer called next(): the clock runs
   std::exception_ptr m_error;
   std::size_t m_dropped = 0;
   std::size_t m_skipped = 0;  //!< the source's skipped objects, read on the grabber's thread

@@ -39,7 +39,7 @@ struct Frame {
 
 /** What a registration saw of one frame on its own (the report of a first frame). */
 struct FrameFeatures {
-  FramePath path{FramePath::Sparse::Photometric};  //!< the refinement's part set by DenseRefined
+  FramePath path;  //!< set by each registration; its refinement part by DenseRefined
   std::size_t orb_features = 0, features = 0;
   StageTimes ms;
 };

@@ -11,7 +11,9 @@ struct SlamParams : public Params<SlamParams> {
   bool enabled = true;     //!< false: the odometry alone, exactly as the tracker gives it
   bool background = true;  //!< loop search and optimisation in a thread beside the tracking
   /** [keyframes] with this many keyframes waiting for the background loop search, the tracking
-   * waits for it: memory and delay stay bounded and no keyframe goes unsearched */
+   * waits for it: memory and delay stay bounded and no keyframe goes unsearched. Live (a sensor,
+   * or a recording played as one) it never waits: a keyframe arriving then joins the graph
+   * without a loop search of its own (KeyframeSlam's `live`). */
   int max_backlog = 16;
   /** [m] keyframes whose estimated position is within this distance of a new keyframe ... */
   double loop_search_radius = 0.6;
@@ -64,7 +66,9 @@ struct SlamParams : public Params<SlamParams> {
   static void declare(P& p, V& v) {
     HRGBD_PARAM(enabled, "SLAM mode: keyframe pose graph with loop closures");
     HRGBD_PARAM(background, "loop search and optimisation in a background thread");
-    HRGBD_PARAM(max_backlog, "[keyframes] waiting for the loop search: the tracking waits",
+    HRGBD_PARAM(max_backlog,
+                "[keyframes] waiting for the loop search: the tracking waits (live: "
+                "the keyframe goes unsearched)",
                 Range::atLeast(1));
     HRGBD_PARAM(loop_search_radius, "[m] loop candidates: keyframes this near", Range::above(0));
     HRGBD_PARAM(loop_search_angle_deg, "[deg] loop candidates: view within this rotation",
