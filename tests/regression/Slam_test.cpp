@@ -131,6 +131,41 @@ TEST(Slam, SimulatedRevisitClosesCorrectLoops) {
   EXPECT_EQ(n, s.frames);
 }
 
+TEST(Slam, ANodePerNodeSpacingEveryKeyframeSearchedOptimisedWhenTheGraphDisagrees) {
+  // the default: a node per 0.2 m of view, every keyframe of the tracker searched for loops, the
+  // graph optimised only when it disagrees with a loop; against every keyframe a node, optimised
+  // after every loop: fewer nodes and optimisations, the loops as right, the trajectory as good
+  std::ostringstream log;
+  const auto all = hrgbd::runPlayback(
+      options("all_nodes", true, "[Slam]\nnode_spacing = 0\noptimize_min_chi2 = 0\n"), log);
+  const auto spaced = hrgbd::runPlayback(options("spaced", true), log);
+  for (const auto* s : {&all, &spaced}) {
+    const auto& st = s->slam_stats;
+    const auto keyframes = static_cast<std::size_t>(std::count_if(
+        s->results.begin(), s->results.end(), [](const auto& r) { return r.keyframe; }));
+    EXPECT_EQ(st.tracker_keyframes, keyframes);
+    EXPECT_EQ(st.work.size() + st.searches_skipped, keyframes) << log.str();
+    std::size_t nodes = 0, with_loops = 0, optimised = 0;
+    for (const auto& w : st.work) {
+      nodes += w.node;
+      with_loops += w.accepted > 0;
+      optimised += w.optimized;
+    }
+    EXPECT_EQ(nodes, st.keyframes);
+    EXPECT_GE(st.loops_accepted, 3u) << log.str();
+    ASSERT_GE(s->loop_check.checked, 3u) << log.str();
+    EXPECT_LT(s->loop_check.largest_translation, 0.03) << log.str();
+    EXPECT_LT(s->eval.ate_rmse, 0.01) << log.str();
+    if (s == &all) {
+      EXPECT_EQ(st.keyframes, keyframes);
+      EXPECT_EQ(optimised, with_loops);
+    } else {
+      EXPECT_LT(st.keyframes, keyframes * 3 / 4) << log.str();
+      EXPECT_LT(optimised, with_loops) << log.str();
+    }
+  }
+}
+
 TEST(Slam, WithoutLoopsItIsTheOdometry) {
   // the SLAM mode with its loop search off (by position and by appearance): a chain of keyframes,
   // frames following them
@@ -171,7 +206,8 @@ TEST(Slam, ABoundedBacklogKeepsEveryKeyframesLoopSearch) {
   // waits for it instead of piling keyframes up, and every keyframe is still searched (measured:
   // the same 57 loops and ATE with and without the bound)
   auto o = options("backlog", true,
-                   "[Odometry]\nkeyframe_max_translation = 0.001\n[Slam]\nmax_backlog = 1\n");
+                   "[Odometry]\nkeyframe_max_translation = 0.001\n[Slam]\nmax_backlog = "
+                   "1\nnode_spacing = 0\n");
   o.max_frames = 25;
   std::ostringstream log;
   const auto s = hrgbd::runPlayback(o, log);
@@ -202,6 +238,7 @@ TEST(Slam, LiveTheTrackingNeverWaitsForTheLoopSearch) {
   mrpt::config::CConfigFileMemory cfg;
   cfg.write("Odometry", "keyframe_max_translation", "0.001");
   cfg.write("Slam", "max_backlog", "1");
+  cfg.write("Slam", "node_spacing", "0");
   hrgbd::OdometryParams odometry;
   odometry.loadFromConfigFile(cfg, "Odometry");
   const auto slam = hrgbd::loadSlamParams(cfg, HRGBD_SOURCE_DIR, odometry.method, true, false);
@@ -235,23 +272,30 @@ TEST(Slam, AKeyframeTakenAfterFailuresIsANodeThatLoopsPlace) {
       std::count_if(s.results.begin(), s.results.end(),
                     [](const auto& r) { return r.keyframe && !r.registered(); });
   EXPECT_GE(flagged_keyframes, 2) << log.str();
-  EXPECT_EQ(s.slam_stats.keyframes, static_cast<std::size_t>(keyframes));
+  // every flagged keyframe is a node, whatever node_spacing (0.2 m here)
+  const auto nodes =
+      std::count_if(s.results.begin(), s.results.end(), [](const auto& r) { return r.node; });
+  for (const auto& r : s.results)
+    if (r.keyframe && !r.registered()) EXPECT_TRUE(r.node);
+  EXPECT_EQ(s.slam_stats.keyframes, static_cast<std::size_t>(nodes));
+  EXPECT_EQ(s.slam_stats.tracker_keyframes, static_cast<std::size_t>(keyframes));
   mrpt::graphs::CNetworkOfPoses3DInf g;
   g.loadFromTextFile(o.graph);
   EXPECT_EQ(g.nodes.size(), s.slam_stats.keyframes);
   EXPECT_EQ(g.edges.size(), g.nodes.size() - 1 + s.loops.size());
-  // the edge into a flagged keyframe is the weak one (0.5 m: information 4 on translation), into
-  // a registered one the fit's (1 cm on 100 inliers)
+  // the edge into a flagged keyframe is the weak one (0.5 m: information 4 on translation, less
+  // the little the keyframes chained before it add), into a registered one the chained fits'
+  // (1 cm each on 100 inliers)
   std::size_t node = 0;
   for (const auto& r : s.results) {
-    if (!r.keyframe) continue;
+    if (!r.node) continue;
     if (node > 0) {
       const auto edge = g.edges.find({node - 1, node});
       ASSERT_NE(edge, g.edges.end()) << "node " << node;
       if (r.registered())
         EXPECT_GT(edge->second.cov_inv(0, 0), 100.0) << "node " << node;
       else
-        EXPECT_NEAR(edge->second.cov_inv(0, 0), 4.0, 1e-6) << "node " << node;
+        EXPECT_NEAR(edge->second.cov_inv(0, 0), 4.0, 0.05) << "node " << node;
     }
     ++node;
   }

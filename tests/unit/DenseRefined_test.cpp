@@ -69,6 +69,34 @@ TEST(DenseRefined, AResultOfThePredictionAloneIsNotASparseFit) {
   }
 }
 
+TEST(DenseRefined, WithAnInlierFloorOnlyFitsOnEnoughInliersAreRefined) {
+  // the SLAM mode's loop verification needs loop_min_inliers sparse inliers: a fit on fewer, or
+  // none, is returned as the sparse stage gave it, unrefined; a fit on enough is refined
+  Frames f(kMotion);
+  const Isometry3d start = perturbed(f.truth, 0.01, 1.0);
+  for (const std::size_t inliers : {0u, 99u, 100u}) {
+    hrgbd::RegistrationResult s = inliers == 0 ? failedFit() : hrgbd::RegistrationResult();
+    if (inliers > 0) s.status = hrgbd::FrameResult::Status::Ok, s.sparse_ok = true;
+    s.inliers = inliers;
+    s.T = start;
+    hrgbd::DenseRefined dense(std::make_unique<ScriptedSparse>(s), hrgbd::DenseParams(), 100);
+    f.cur.dense.reset(), f.ref.dense.reset();
+    dense.prepare(f.cur);
+    dense.prepare(f.ref);
+    f.cur.guess = f.truth;
+    const auto r = dense.align(f.cur, f.ref);
+    if (inliers < 100) {
+      EXPECT_EQ(r.seen.path.refined, hrgbd::FramePath::Refined::None) << inliers;
+      EXPECT_EQ(r.ok(), inliers > 0);
+      EXPECT_TRUE(r.T.isApprox(start)) << inliers;
+    } else {
+      ASSERT_TRUE(r.ok()) << r.detail;
+      EXPECT_NE(r.seen.path.refined, hrgbd::FramePath::Refined::None);
+      EXPECT_LT(error(r.T, f.truth).first, 0.002);
+    }
+  }
+}
+
 // The depth check as DenseRefined calls it: the motion that made the frames explains the
 // reference's depth, a motion 20 cm and 10 deg off does not, nor one that puts every point behind
 // the reference camera (none lands on known depth).

@@ -23,10 +23,11 @@ void ColouredMapSink::add(const mrpt::obs::CObservation3DRangeScan& obs, const F
   if (!r.registered()) return;
   if (!m_keyframes_only) {
     m_map.insert(obs, r.pose);
-  } else if (r.keyframe) {
+  } else if (r.node) {
     ColouredMap cloud(m_map.params());
     cloud.insert(obs, mrpt::poses::CPose3D());
     m_map.insert(cloud, r.pose);
+    cloud.freeze();  // kept only to be inserted again
     m_clouds.emplace_back(m_path.size() - 1, std::move(cloud));
   }
 }

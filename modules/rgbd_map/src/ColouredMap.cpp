@@ -23,8 +23,14 @@ void MapParams::checkTogether(const std::string& s) const {
 ColouredMap::ColouredMap(const MapParams& params) : m_params(params) {}
 
 void ColouredMap::clear() {
-  m_voxels.clear();
+  m_voxels = {};
   m_points.clear();
+  m_frozen = false;
+}
+
+void ColouredMap::freeze() {
+  m_voxels = {};  // a new empty set: clear() would keep the buckets
+  m_frozen = true;
 }
 
 std::size_t ColouredMap::insert(const mrpt::obs::CObservation3DRangeScan& obs,
@@ -56,6 +62,7 @@ std::size_t ColouredMap::insert(const mrpt::obs::CObservation3DRangeScan& obs,
 }
 
 bool ColouredMap::addPoint(double x, double y, double z, float r, float g, float b) {
+  if (m_frozen) throw std::logic_error("ColouredMap: inserted into after freeze()");
   const double inv = 1.0 / m_params.voxel_size;
   // 21 bits per axis: +-10 km at 1 cm voxels.
   auto cell = [inv](double c) {

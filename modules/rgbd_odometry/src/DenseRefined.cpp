@@ -49,8 +49,9 @@ DepthCheck checkDepth(const Frame& cur, const Frame& ref, const Eigen::Isometry3
 
 }  // namespace
 
-DenseRefined::DenseRefined(std::unique_ptr<Registration> inner, const DenseParams& params)
-    : m_inner(std::move(inner)), m_params(params) {}
+DenseRefined::DenseRefined(std::unique_ptr<Registration> inner, const DenseParams& params,
+                           std::size_t min_inliers)
+    : m_inner(std::move(inner)), m_params(params), m_min_inliers(min_inliers) {}
 
 FrameFeatures DenseRefined::prepare(Frame& frame) {
   FrameFeatures seen = m_inner->prepare(frame);
@@ -64,6 +65,7 @@ FrameFeatures DenseRefined::prepare(Frame& frame) {
 
 RegistrationResult DenseRefined::align(Frame& cur, Frame& ref) {
   RegistrationResult r = m_inner->align(cur, ref);
+  if (m_min_inliers > 0 && (!r.ok() || r.inliers < m_min_inliers)) return r;
   if (!ref.dense) prepare(ref);
   std::vector<Eigen::Isometry3d> starts;
   if (r.ok()) starts.push_back(r.T);

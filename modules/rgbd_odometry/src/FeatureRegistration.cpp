@@ -157,10 +157,11 @@ std::unique_ptr<Registration> makeSparseRegistration(const OdometryParams& p) {
 
 }  // namespace
 
-std::unique_ptr<Registration> makeRegistration(const OdometryParams& p) {
+std::unique_ptr<Registration> makeRegistration(const OdometryParams& p,
+                                               std::size_t refine_min_inliers) {
   auto sparse = makeSparseRegistration(p);
   if (!p.dense.enabled) return sparse;
-  return std::make_unique<DenseRefined>(std::move(sparse), p.dense);
+  return std::make_unique<DenseRefined>(std::move(sparse), p.dense, refine_min_inliers);
 }
 
 }  // namespace hrgbd

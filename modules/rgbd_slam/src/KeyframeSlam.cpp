@@ -9,14 +9,15 @@
 
 #include "SlamCommon.h"
 #include "rgbd_core/Config.h"
+#include "rgbd_core/Median.h"
 #include "rgbd_core/Timing.h"
-#include "rgbd_eval/Evaluate.h"
 #include "rgbd_odometry/RigidFit.h"
 
 namespace hrgbd {
 
-using slam::fitInformation;
-using slam::predictedInformation;
+using slam::fitSigma;
+using slam::kPredictedSigma;
+using slam::sigmaInformation;
 using slam::viewDistance;
 
 namespace {
@@ -70,14 +71,20 @@ std::size_t keptBytes(const Frame& f) {
 }  // namespace
 
 std::string toText(const SlamStats& s) {
+  std::vector<double> search, optimize;
+  for (const auto& w : s.work) {
+    if (w.verified > 0) search.push_back(w.search_ms);
+    if (w.optimized) optimize.push_back(w.optimize_ms);
+  }
   std::ostringstream out;
-  out << std::fixed << std::setprecision(1) << "SLAM: " << s.keyframes << " keyframes ("
-      << s.kept_bytes / 1e6 << " MB kept), " << s.candidates << " loop candidates verified ("
-      << s.by_appearance << " by appearance), " << s.loops_accepted << " loops accepted ("
-      << s.appearance_loops << " by appearance), " << s.loops_dropped
-      << " dropped as inconsistent; loop search median " << percentile(s.search_ms, 0.5)
-      << " ms per keyframe, " << s.optimizations << " optimisations, median "
-      << percentile(s.optimize_ms, 0.5) << " ms; largest backlog " << s.largest_backlog
+  out << std::fixed << std::setprecision(1) << "SLAM: " << s.keyframes << " nodes of "
+      << s.tracker_keyframes << " keyframes (" << s.kept_bytes / 1e6 << " MB kept), "
+      << s.candidates << " loop candidates verified (" << s.by_appearance << " by appearance), "
+      << s.loops_accepted << " loops accepted (" << s.appearance_loops << " by appearance), "
+      << s.loops_dropped << " dropped as inconsistent; loop search median "
+      << (search.empty() ? 0.0 : median(search)) << " ms per keyframe, " << s.optimizations
+      << " optimisations, median " << (optimize.empty() ? 0.0 : median(optimize)) << " ms (final "
+      << s.final_optimize_ms << " ms); largest backlog " << s.largest_backlog
       << " keyframes, tracking waited " << s.backlog_waits << " times (" << s.waited_ms << " ms), "
       << s.searches_skipped << " loop searches skipped\n";
   return out.str();
@@ -87,7 +94,8 @@ KeyframeSlam::KeyframeSlam(const SlamParams& params, const OdometryParams& odome
     : m_params(params),
       m_live(live),
       m_odometry(odometry),
-      m_registration(makeRegistration(loopRegistration(odometry, params))) {
+      m_registration(makeRegistration(loopRegistration(odometry, params),
+                                      static_cast<std::size_t>(params.loop_min_inliers))) {
   if (!m_params.vocabulary.empty()) try {
       m_vocabulary = Vocabulary::load(m_params.vocabulary == "bundled" ? bundledVocabulary()
                                                                        : m_params.vocabulary);
@@ -118,47 +126,14 @@ void KeyframeSlam::rethrowWorkerFailure() {
 bool KeyframeSlam::add(FrameResult& r, RgbdOdometry& tracker) {
   rethrowWorkerFailure();
   if (r.keyframe && tracker.keyframe()) {  // registered, or taken after failures
-    Job job;
-    job.id = m_tracker_kf.size();
-    job.frame = keptForLoops(*tracker.keyframe());
-    job.pose = r.pose;
-    job.first = m_tracker_kf.empty();
-    if (!job.first)
-      job.odometry = PoseGraphEdge{
-          m_tracker_kf.size() - 1, m_tracker_kf.size(), (-m_tracker_kf.back()) + r.pose,
-          r.registered() ? fitInformation(m_params, r.inliers, false) : predictedInformation(),
-          false};
-    m_tracker_kf.push_back(r.pose);
-    m_keyframe_frame.push_back(m_places.size());
-    if (m_params.background) {
-      {
-        std::unique_lock<std::mutex> lock(m_mutex);
-        const auto backlog = static_cast<std::size_t>(m_params.max_backlog);
-        // live, the keyframes waiting without a search of their own cost the worker little
-        const auto searches = static_cast<std::size_t>(
-            std::count_if(m_queue.begin(), m_queue.end(), [](const Job& j) { return j.search; }));
-        if (searches >= backlog && m_live) {
-          // the back end drops work, not the tracker: this keyframe is a node and an edge only
-          job.search = false;
-          ++m_stats.searches_skipped;
-        } else if (!m_live && m_queue.size() >= backlog) {
-          ++m_stats.backlog_waits;
-          double ms = 0;
-          timed(ms, [&] {
-            m_idle.wait(lock, [&] { return m_queue.size() < backlog || m_failed; });
-            return 0;
-          });
-          m_stats.waited_ms += ms;
-        }
-        // the worker failed: the graph is out of step, no more jobs for it
-        if (m_failed) std::rethrow_exception(m_failed);
-        m_queue.push_back(std::move(job));
-        m_stats.largest_backlog = std::max(m_stats.largest_backlog, m_queue.size());
-      }
-      m_wake.notify_all();
-    } else {
-      process(std::move(job));
-    }
+    ++m_tracker_keyframes;
+    // the odometry from the last node to here: its variance grows with each keyframe's fit
+    const double sigma = r.registered() ? fitSigma(m_params, r.inliers, false) : kPredictedSigma;
+    m_chain_variance += sigma * sigma;
+    const bool node = m_tracker_kf.empty() || !r.registered() ||
+                      viewDistance((-m_tracker_kf.back()) + r.pose) >= m_params.node_spacing;
+    addJob(r, tracker, node);
+    r.node = node;
   }
   if (m_tracker_kf.empty()) {  // no keyframe yet (a first frame without depth): stays at origin
     m_places.push_back({0, r.pose});
@@ -169,6 +144,64 @@ bool KeyframeSlam::add(FrameResult& r, RgbdOdometry& tracker) {
   applyOptimization(tracker);
   r.pose = tracker.pose();
   return m_applied != before;
+}
+
+void KeyframeSlam::addJob(const FrameResult& r, const RgbdOdometry& tracker, bool node) {
+  Job job;
+  job.node = node;
+  job.frame_index = m_places.size();
+  job.frame = keptForLoops(*tracker.keyframe());
+  job.pose = r.pose;
+  job.first = m_tracker_kf.empty();
+  if (!node) {
+    job.id = m_tracker_kf.size() - 1;
+    job.in_node = (-m_tracker_kf.back()) + r.pose;
+  } else {
+    job.id = m_tracker_kf.size();
+    if (!job.first)
+      job.odometry = PoseGraphEdge{job.id - 1, job.id, (-m_tracker_kf.back()) + r.pose,
+                                   sigmaInformation(std::sqrt(m_chain_variance)), false};
+    m_chain_variance = 0;
+    m_tracker_kf.push_back(r.pose);
+    m_keyframe_frame.push_back(m_places.size());
+  }
+  if (!m_params.background) return process(std::move(job));
+  {
+    std::unique_lock<std::mutex> lock(m_mutex);
+    const auto backlog = static_cast<std::size_t>(m_params.max_backlog);
+    // live, the keyframes waiting without a search of their own cost the worker little
+    const auto searches = static_cast<std::size_t>(
+        std::count_if(m_queue.begin(), m_queue.end(), [](const Job& j) { return j.search; }));
+    // the back end drops work, not the tracker: a keyframe that is not a node goes unsearched,
+    // and a node makes room by dropping the oldest such keyframe waiting
+    const auto not_node =
+        std::find_if(m_queue.begin(), m_queue.end(), [](const Job& j) { return !j.node; });
+    if (searches >= backlog && !node) {
+      ++m_stats.searches_skipped;
+      return;
+    } else if (searches >= backlog && not_node != m_queue.end()) {
+      ++m_stats.searches_skipped;
+      m_queue.erase(not_node);
+    } else if (searches >= backlog && m_live) {
+      // live, the node joins the graph with its odometry edge only
+      ++m_stats.searches_skipped;
+      job.search = false;
+    } else if (!m_live && m_queue.size() >= backlog) {
+      // offline, every node is searched: the tracking waits for room
+      ++m_stats.backlog_waits;
+      double ms = 0;
+      timed(ms, [&] {
+        m_idle.wait(lock, [&] { return m_queue.size() < backlog || m_failed; });
+        return 0;
+      });
+      m_stats.waited_ms += ms;
+    }
+    // the worker failed: the graph is out of step, no more jobs for it
+    if (m_failed) std::rethrow_exception(m_failed);
+    m_queue.push_back(std::move(job));
+    m_stats.largest_backlog = std::max(m_stats.largest_backlog, m_queue.size());
+  }
+  m_wake.notify_all();
 }
 
 void KeyframeSlam::applyOptimization(RgbdOdometry& tracker) {
@@ -214,48 +247,65 @@ void KeyframeSlam::work() {
 
 void KeyframeSlam::process(Job job) {
   const std::size_t id = job.id;
-  m_keyframes.push_back(std::move(job.frame));
-  const auto& orb = m_keyframes.back()->orb;
-  m_words.push_back(m_vocabulary && orb ? m_vocabulary->transform(orb->descriptors) : BowVector{});
-  if (!job.first) {
-    m_graph.addNode(m_graph.pose(job.odometry.from) + job.odometry.relative);
-    m_graph.addEdge(job.odometry);
-    m_path.push_back(m_path.back() + viewDistance(job.odometry.relative));
-  } else {
-    m_graph.addNode(job.pose);
-    m_path.push_back(0);
+  const auto& orb = job.frame->orb;
+  BowVector words = m_vocabulary && orb ? m_vocabulary->transform(orb->descriptors) : BowVector{};
+  if (job.node) {
+    m_keyframes.push_back(job.frame);
+    m_words.push_back(std::move(words));
+    m_linked.emplace_back();
+    if (!job.first) {
+      m_graph.addNode(m_graph.pose(job.odometry.from) + job.odometry.relative);
+      m_graph.addEdge(job.odometry);
+      m_path.push_back(m_path.back() + viewDistance(job.odometry.relative));
+    } else {
+      m_graph.addNode(job.pose);
+      m_path.push_back(0);
+    }
   }
-  double search_ms = 0;
-  std::size_t verified = 0, accepted = 0, by_appearance = 0, appearance_loops = 0;
-  timed(search_ms, [&] {
+  const Query query{*job.frame, id, job.node, job.in_node, job.node ? m_words.back() : words};
+  KeyframeWork work;
+  work.frame = job.frame_index;
+  work.node = job.node;
+  std::size_t by_appearance = 0, appearance_loops = 0;
+  double disagreement = 0;  // largest chi-square of a new loop edge at the graph's poses
+  timed(work.search_ms, [&] {
     if (!job.search) return 0;
-    for (const Candidate& c : candidates(id)) {
-      ++verified;
+    for (const Candidate& c : candidates(query)) {
+      ++work.verified;
       by_appearance += c.by_appearance;
-      if (auto edge = verify(id, c.keyframe)) {
+      if (auto edge = verify(query, c.keyframe)) {
+        disagreement = std::max(disagreement,
+                                edgeChi2(*edge, m_graph.pose(edge->from), m_graph.pose(edge->to)));
         m_graph.addEdge(*edge);
-        ++accepted;
+        m_linked[id].push_back(edge->from);
+        ++work.accepted;
         appearance_loops += c.by_appearance;
       }
     }
     return 0;
   });
-  // searched: from now on only a reference (reference() unpacks a copy)
-  if (m_keyframes.back()->dense) packLevels(*m_keyframes.back()->dense);
-  const std::size_t kept = keptBytes(*m_keyframes.back());
+  std::size_t kept = 0;
+  if (job.node) {
+    // searched: from now on only a reference (reference() unpacks a copy)
+    if (m_keyframes.back()->dense) packLevels(*m_keyframes.back()->dense);
+    kept = keptBytes(*m_keyframes.back());
+  }
   std::optional<PoseGraphOptimization> opt;
-  if (accepted > 0) opt = m_graph.optimize(m_params.loop_max_chi2, m_params.optimizer_iterations);
+  if (work.accepted > 0 && disagreement >= m_params.optimize_min_chi2)
+    opt = m_graph.optimize(m_params.loop_max_chi2, m_params.optimizer_iterations);
+  work.nodes = m_graph.nodes();
+  work.edges = m_graph.edges().size();
+  if (opt) work.optimized = true, work.optimize_ms = opt->ms, work.iterations = opt->iterations;
   std::lock_guard<std::mutex> lock(m_mutex);
   m_stats.keyframes = m_graph.nodes();
   m_stats.kept_bytes += kept;
-  m_stats.candidates += verified;
+  m_stats.candidates += work.verified;
   m_stats.by_appearance += by_appearance;
-  m_stats.loops_accepted += accepted;
+  m_stats.loops_accepted += work.accepted;
   m_stats.appearance_loops += appearance_loops;
-  if (verified > 0) m_stats.search_ms.push_back(search_ms);
+  m_stats.work.push_back(work);
   if (opt) {
     m_stats.loops_dropped += opt->dropped.size();
-    m_stats.optimize_ms.push_back(opt->ms);
     ++m_stats.optimizations;
     publish();
   }
@@ -280,7 +330,7 @@ void KeyframeSlam::flush() {
   const auto opt = m_graph.optimize(m_params.loop_max_chi2, m_params.optimizer_iterations);
   std::lock_guard<std::mutex> lock(m_mutex);
   m_stats.loops_dropped += opt.dropped.size();
-  m_stats.optimize_ms.push_back(opt.ms);
+  m_stats.final_optimize_ms = opt.ms;
   ++m_stats.optimizations;
   publish();
   m_applied = m_optimizations;  // the final poses are every keyframe's, not a correction
@@ -310,7 +360,9 @@ SlamPoses KeyframeSlam::poses() const {
 
 SlamStats KeyframeSlam::stats() const {
   std::lock_guard<std::mutex> lock(m_mutex);
-  return m_stats;
+  SlamStats s = m_stats;
+  s.tracker_keyframes = m_tracker_keyframes;
+  return s;
 }
 
 void KeyframeSlam::reset() {
@@ -318,10 +370,13 @@ void KeyframeSlam::reset() {
   m_places.clear();
   m_tracker_kf.clear();
   m_keyframe_frame.clear();
+  m_chain_variance = 0;
+  m_tracker_keyframes = 0;
   m_keyframes.clear();
   m_references.clear();
   m_words.clear();
   m_path.clear();
+  m_linked.clear();
   m_graph = PoseGraph();
   m_queue.clear();
   m_optimized.clear();
@@ -330,7 +385,8 @@ void KeyframeSlam::reset() {
   m_failed = nullptr;
   m_applied = m_optimizations = 0;
   m_stats = SlamStats();
-  m_registration = makeRegistration(loopRegistration(m_odometry, m_params));
+  m_registration = makeRegistration(loopRegistration(m_odometry, m_params),
+                                    static_cast<std::size_t>(m_params.loop_min_inliers));
   if (m_params.background) m_thread = std::thread([this] { work(); });
 }
 

@@ -18,12 +18,12 @@ namespace {
 constexpr std::size_t kReferences = 8;  //!< keyframes kept as references: 3-4 MB each
 }  // namespace
 
-std::vector<KeyframeSlam::Candidate> KeyframeSlam::candidates(std::size_t id) const {
+std::vector<KeyframeSlam::Candidate> KeyframeSlam::candidates(const Query& q) const {
   const auto sep = static_cast<std::size_t>(m_params.loop_min_separation);
-  if (id < sep) return {};
-  const auto& here = m_graph.pose(id);
+  if (q.node < sep) return {};
+  const auto here = m_graph.pose(q.node) + q.in_node;
   std::vector<std::pair<double, std::size_t>> near;  // (view distance, keyframe)
-  for (std::size_t j = 0; j + sep <= id; ++j) {
+  for (std::size_t j = 0; j + sep <= q.node; ++j) {
     const auto d = (-m_graph.pose(j)) + here;
     const double metres = d.norm(), angle = angleRad(d);
     if (metres <= m_params.loop_search_radius &&
@@ -46,24 +46,34 @@ std::vector<KeyframeSlam::Candidate> KeyframeSlam::candidates(std::size_t id) co
   // by appearance: only keyframes the graph puts outside the search window (after drift); those
   // inside had their chance by position (more loops over the same views only add correlated
   // errors: fr1/rpy 0.0146 -> 0.0159 m with them)
-  std::vector<bool> inside(id + 1, false);
+  std::vector<bool> inside(q.node + 1, false);
   for (const auto& [score, j] : near) inside[j] = true;
   const std::size_t all =
       out.size() + static_cast<std::size_t>(m_params.loop_appearance_candidates);
-  for (std::size_t j : alike(id))
+  for (std::size_t j : alike(q))
     if (!inside[j]) take(j, true, all);
+  // a candidate a loop already links with q's node (found from another of its keyframes) is not
+  // verified again: another edge over the same views adds work, and little but correlated error
+  const auto& linked = m_linked[q.node];
+  out.erase(std::remove_if(out.begin(), out.end(),
+                           [&](const Candidate& c) {
+                             return std::find(linked.begin(), linked.end(), c.keyframe) !=
+                                    linked.end();
+                           }),
+            out.end());
   return out;
 }
 
-std::vector<std::size_t> KeyframeSlam::alike(std::size_t id) const {
+std::vector<std::size_t> KeyframeSlam::alike(const Query& q) const {
   const auto sep = static_cast<std::size_t>(m_params.loop_min_separation);
-  if (m_words[id].empty() || id < sep) return {};
-  // DBoW2's normalised score: relative to the keyframe's score with the one before it
-  const double expected = bowScore(m_words[id], m_words[id - 1]);
+  if (q.words.empty() || q.node < sep) return {};
+  // DBoW2's normalised score: relative to the keyframe's score with the node before it (a node),
+  // or with its node (a keyframe that follows one)
+  const double expected = bowScore(q.words, m_words[q.is_node ? q.node - 1 : q.node]);
   if (expected <= 0) return {};
   std::vector<std::pair<double, std::size_t>> scored;
-  for (std::size_t j = 0; j + sep <= id; ++j) {
-    const double s = bowScore(m_words[id], m_words[j]) / expected;
+  for (std::size_t j = 0; j + sep <= q.node; ++j) {
+    const double s = bowScore(q.words, m_words[j]) / expected;
     if (s >= m_params.loop_min_appearance) scored.emplace_back(-s, j);
   }
   std::sort(scored.begin(), scored.end());
@@ -72,13 +82,14 @@ std::vector<std::size_t> KeyframeSlam::alike(std::size_t id) const {
   return out;
 }
 
-std::optional<PoseGraphEdge> KeyframeSlam::verify(std::size_t id, std::size_t candidate) {
+std::optional<PoseGraphEdge> KeyframeSlam::verify(const Query& q, std::size_t candidate) {
   // The graph's prediction is a second start of the dense refinement (it wins over a poorer
   // sparse fit: fr1/rpy's largest loop error 8.4 -> 4.7 cm), but a loop needs a sparse fit that
   // succeeded: the refinement from the prediction alone only repeats the graph (such results
   // came back as loops up to 13 cm off on fr1/rpy).
-  const mrpt::poses::CPose3D predicted = (-m_graph.pose(candidate)) + m_graph.pose(id);
-  Frame& cur = *m_keyframes[id];  // the worker's own: the guess is set for this attempt only
+  const mrpt::poses::CPose3D predicted =
+      (-m_graph.pose(candidate)) + (m_graph.pose(q.node) + q.in_node);
+  Frame& cur = q.frame;  // the worker's own: the guess is set for this attempt only
   cur.guess = toIsometry(predicted);
   const RegistrationResult reg = m_registration->align(cur, reference(candidate));
   cur.guess.reset();
@@ -89,12 +100,14 @@ std::optional<PoseGraphEdge> KeyframeSlam::verify(std::size_t id, std::size_t ca
   const auto d = (-predicted) + measured;
   // where the graph puts it, give or take the odometry's drift between the two
   // [m], at most the search radius: beyond that the inliers and the chi-square check decide
-  const double drift =
-      std::min(m_params.loop_drift * (m_path[id] - m_path[candidate]), m_params.loop_search_radius);
+  const double path = m_path[q.node] + viewDistance(q.in_node) - m_path[candidate];
+  const double drift = std::min(m_params.loop_drift * path, m_params.loop_search_radius);
   if (d.norm() > m_params.loop_max_discrepancy + drift ||
       angleRad(d) > mrpt::DEG2RAD(m_params.loop_max_discrepancy_deg) + drift / kLever)
     return std::nullopt;
-  return PoseGraphEdge{candidate, id, measured, fitInformation(m_params, reg.inliers, true), true};
+  // to q's node: the keyframe's measured pose, back along its place in its node
+  return PoseGraphEdge{candidate, q.node, measured + (-q.in_node),
+                       fitInformation(m_params, reg.inliers, true), true};
 }
 
 Frame& KeyframeSlam::reference(std::size_t id) {

@@ -25,18 +25,27 @@ inline double viewDistance(const mrpt::poses::CPose3D& d) {
   return d.norm() + kLever * angleRad(d);
 }
 
-/** Information of a registration on `inliers` sparse inliers (dense-only: as 10). */
-inline mrpt::math::CMatrixDouble66 fitInformation(const SlamParams& p, std::size_t inliers,
-                                                  bool loop) {
-  const double sigma = p.edge_sigma * std::sqrt(100.0 / std::max<double>(inliers, 10)) *
-                       (loop ? p.loop_sigma_factor : 1.0);
+/** [m] translation sigma of a registration on `inliers` sparse inliers (dense-only: as 10); its
+ * rotation's is this over kLever. */
+inline double fitSigma(const SlamParams& p, std::size_t inliers, bool loop) {
+  return p.edge_sigma * std::sqrt(100.0 / std::max<double>(inliers, 10)) *
+         (loop ? p.loop_sigma_factor : 1.0);
+}
+
+/** Information of an edge with translation sigma `sigma` (rotation: over kLever). */
+inline mrpt::math::CMatrixDouble66 sigmaInformation(double sigma) {
   return edgeInformation(sigma, sigma / kLever);
 }
 
-/** Information of the edge to a keyframe the tracker took after failures, at a predicted pose:
- * 0.5 m and 19 deg, enough to keep the graph connected and for loops to place it. */
-inline mrpt::math::CMatrixDouble66 predictedInformation() {
-  return edgeInformation(0.5, 0.5 / kLever);
+/** Information of a registration on `inliers` sparse inliers (dense-only: as 10). */
+inline mrpt::math::CMatrixDouble66 fitInformation(const SlamParams& p, std::size_t inliers,
+                                                  bool loop) {
+  return sigmaInformation(fitSigma(p, inliers, loop));
 }
+
+/** [m] translation sigma of the edge to a keyframe the tracker took after failures, at a
+ * predicted pose: 0.5 m and 19 deg, enough to keep the graph connected and for loops to place it.
+ */
+inline constexpr double kPredictedSigma = 0.5;
 
 }  // namespace hrgbd::slam

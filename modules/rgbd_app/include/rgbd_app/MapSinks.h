@@ -26,11 +26,11 @@ struct MapFiles {
 class ColouredMapSink : public FrameSink {
  public:
   /** `files` are written by finish(); none for a map that is only shown or saved on demand.
-   * `keyframes_only` (SLAM mode): only keyframes enter the map, each kept as its own cloud so
-   * that correct() rebuilds the map at the optimised poses. */
+   * `keyframes_only` (SLAM mode): only the pose graph's nodes (FrameResult::node) enter the map,
+   * each kept as its own cloud so that correct() rebuilds the map at the optimised poses. */
   explicit ColouredMapSink(const MapParams& params, MapFiles files = {},
                            bool keyframes_only = false);
-  /** Registered frames (keyframes only, see above) enter the map; every frame extends the
+  /** Registered frames (nodes only, see above) enter the map; every frame extends the
    * path. */
   void add(const mrpt::obs::CObservation3DRangeScan& obs, const FrameResult& r) override;
   /** Moves the path onto the optimised poses, rebuilds the map from the keyframes' clouds (with

@@ -49,6 +49,10 @@ class ColouredMap {
    * seen from `optical_pose`; voxels as above. Returns the number of points added. */
   std::size_t insert(const ColouredMap& local, const mrpt::poses::CPose3D& optical_pose);
   void clear();
+  /** Drops the voxel index (over half of a cloud's memory): the map can still be inserted into
+   * another, saved and drawn, but no longer inserted into (insert() then throws
+   * std::logic_error); clear() makes it a map again. For clouds kept only to be re-inserted. */
+  void freeze();
   std::size_t size() const { return m_points.size(); }
   const MapParams& params() const { return m_params; }
   const mrpt::maps::CColouredPointsMap& points() const { return m_points; }
@@ -63,6 +67,7 @@ class ColouredMap {
   MapParams m_params;
   std::unordered_set<std::uint64_t> m_voxels;
   mrpt::maps::CColouredPointsMap m_points;
+  bool m_frozen = false;  //!< freeze()
 };
 
 /** The camera path as a polyline, and a frustum at each of `frustums` evenly spaced poses

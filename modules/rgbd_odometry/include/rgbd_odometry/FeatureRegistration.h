@@ -78,16 +78,21 @@ class HybridRegistration : public Registration {
  * start by more than max_correction[_deg] is not trusted: the frame is flagged (LargeResiduals).
  * A refinement alone (no estimate of the inner registration) must also see surfaces facing three
  * directions where texture is scarce (min_normal_spread) and explain the reference's depth
- * (min_depth_agreement), or the inner registration's failure stands. */
+ * (min_depth_agreement), or the inner registration's failure stands. With `min_inliers` > 0
+ * only an inner estimate on at least that many inliers is refined, and the inner result stands
+ * otherwise (the SLAM mode's loop verification, which needs as many: refining the others is
+ * work thrown away). */
 class DenseRefined : public Registration {
  public:
-  DenseRefined(std::unique_ptr<Registration> inner, const DenseParams& params);
+  DenseRefined(std::unique_ptr<Registration> inner, const DenseParams& params,
+               std::size_t min_inliers = 0);
   FrameFeatures prepare(Frame& frame) override;
   RegistrationResult align(Frame& cur, Frame& ref) override;
 
  private:
   std::unique_ptr<Registration> m_inner;
   DenseParams m_params;
+  std::size_t m_min_inliers = 0;
 };
 
 }  // namespace hrgbd

@@ -73,6 +73,9 @@ struct FrameResult {
   /** became the reference for the next frames: registered, or the last of
    * keyframe_after_failures flagged frames in a row (at its predicted pose) */
   bool keyframe = false;
+  /** SLAM mode: the keyframe is a node of the pose graph (set by KeyframeSlam::add(); the
+   * tracker's keyframes closer than [Slam] node_spacing to the last node are not) */
+  bool node = false;
   StageTimes ms;  //!< [ms] per stage
   bool registered() const { return status == Status::Ok || status == Status::FirstFrame; }
 };

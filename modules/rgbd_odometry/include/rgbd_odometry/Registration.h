@@ -7,6 +7,7 @@
  * further implementations. */
 #include <Eigen/Geometry>
 #include <any>
+#include <cstddef>
 #include <memory>
 #include <optional>
 #include <string>
@@ -73,8 +74,10 @@ class Registration {
 
 struct OdometryParams;
 
-/** The product's registrations: hybrid, rgb_only or depth_only from `params.method`. Throws
- * ConfigError for a baseline or peer method (those are made by rgbd_baselines). */
-std::unique_ptr<Registration> makeRegistration(const OdometryParams& params);
+/** The product's registrations: hybrid, rgb_only or depth_only from `params.method`, refined
+ * (DenseRefined) with [Dense] enabled: with `refine_min_inliers` > 0 only the sparse fits on as
+ * many inliers. Throws ConfigError for a baseline or peer method (made by rgbd_baselines). */
+std::unique_ptr<Registration> makeRegistration(const OdometryParams& params,
+                                               std::size_t refine_min_inliers = 0);
 
 }  // namespace hrgbd

@@ -1,15 +1,18 @@
 #pragma once
 /** \file KeyframeSlam.h
- * The SLAM mode over the tracker: every keyframe the tracker makes becomes a node of the pose
- * graph, linked to the previous keyframe by the tracker's registration. Each new keyframe looks
- * for loops among the keyframes near its estimated pose; every candidate goes through the
- * tracking's own registration (sparse MSSE, then the dense refinement), must register on enough
- * inliers and land near where the graph puts it (allowing for the drift over the path between
- * them), and becomes a loop edge. With a vocabulary, the older keyframes that look most alike
- * (bag of binary words, Vocabulary.h) are candidates too, wherever the graph puts them. The graph
- * is optimised after each accepted loop, with inconsistent loops dropped (PoseGraph). The loop
- * search and the optimisation run in a background thread (`background`), and the tracker is moved
- * onto the optimised poses when one finishes. Frames between keyframes follow their keyframe. */
+ * The SLAM mode over the tracker: the tracker's keyframes, one per [Slam] node_spacing of view,
+ * become nodes of the pose graph, linked to the previous node by the tracker's registrations.
+ * Each new keyframe of the tracker (a node or not) looks for loops among the nodes near its
+ * estimated pose and not yet linked with its node; every candidate goes through the tracking's
+ * own registration (sparse MSSE, then the dense refinement when the sparse fit has enough
+ * inliers), must register on enough inliers and land near where the graph puts it (allowing
+ * for the drift over the path between them), and becomes a loop edge to the keyframe's node.
+ * With a vocabulary, the older nodes that look most alike (bag of binary words, Vocabulary.h)
+ * are candidates too, wherever the graph puts them. The graph is optimised when it disagrees
+ * with an accepted loop (optimize_min_chi2) and at the end, with inconsistent loops dropped
+ * (PoseGraph). The loop search and the optimisation run in a background thread (`background`),
+ * and the tracker is moved onto the optimised poses when one finishes. Frames between nodes
+ * follow their node. */
 #include <condition_variable>
 #include <cstddef>
 #include <deque>
@@ -30,41 +33,58 @@
 
 namespace hrgbd {
 
+/** What the back end did for one keyframe of the tracker. */
+struct KeyframeWork {
+  std::size_t frame = 0;       //!< index of the keyframe's frame
+  bool node = false;           //!< it became a node of the graph ([Slam] node_spacing)
+  std::size_t verified = 0;    //!< loop candidates verified
+  std::size_t accepted = 0;    //!< of them: loop edges
+  double search_ms = 0;        //!< [ms] the loop search and its verifications
+  bool optimized = false;      //!< the graph was optimised after this keyframe's search
+  double optimize_ms = 0;      //!< [ms] that optimisation
+  std::size_t iterations = 0;  //!< its Levenberg-Marquardt iterations, all rounds
+  std::size_t nodes = 0;       //!< the graph's size after this keyframe
+  std::size_t edges = 0;
+};
+
 /** What the SLAM mode did so far. */
 struct SlamStats {
-  std::size_t keyframes = 0;
-  std::size_t candidates = 0;        //!< loop candidates verified
-  std::size_t by_appearance = 0;     //!< of them: found by appearance only (not by position)
-  std::size_t loops_accepted = 0;    //!< passed verification and became loop edges
-  std::size_t appearance_loops = 0;  //!< of them: candidates by appearance only
-  std::size_t loops_dropped = 0;     //!< loop edges dropped as inconsistent by the optimisation
+  std::size_t tracker_keyframes = 0;  //!< keyframes the tracker took
+  std::size_t keyframes = 0;          //!< of them: nodes of the graph ([Slam] node_spacing)
+  std::size_t candidates = 0;         //!< loop candidates verified
+  std::size_t by_appearance = 0;      //!< of them: found by appearance only (not by position)
+  std::size_t loops_accepted = 0;     //!< passed verification and became loop edges
+  std::size_t appearance_loops = 0;   //!< of them: candidates by appearance only
+  std::size_t loops_dropped = 0;      //!< loop edges dropped as inconsistent by the optimisation
   std::size_t optimizations = 0;
   std::size_t largest_backlog = 0;  //!< most keyframes ever waiting for the loop search
   std::size_t backlog_waits = 0;    //!< times the tracking waited for it (max_backlog reached)
   double waited_ms = 0;             //!< [ms] the tracking waited for it, in all
-  /** live: keyframes that joined the graph without a loop search of their own (max_backlog
-   * reached; they are still candidates of later keyframes' searches) */
+  /** keyframes not searched for loops (max_backlog reached): those that are not nodes, and live
+   * nodes too (these are still candidates of later keyframes' searches) */
   std::size_t searches_skipped = 0;
   /** what the kept keyframes hold (images, features, pyramids), counted as each is added; the
    * references made from the last 8 (KeyframeSlam::reference()) come on top, 3-4 MB each */
   std::size_t kept_bytes = 0;
-  std::vector<double> search_ms;    //!< [ms] loop search and verification, per keyframe with
-                                    //!< candidates
-  std::vector<double> optimize_ms;  //!< [ms] per optimisation
+  std::vector<KeyframeWork> work;  //!< per keyframe handed to the back end, in order
+  double final_optimize_ms = 0;    //!< [ms] the optimisation of flush()
 };
 
-/** "SLAM: N keyframes (M MB kept), ... loops ..., search ms median ..., optimisation ms median ...;
- * largest backlog ..., tracking waited ... times (... ms), ... loop searches skipped\n" */
+/** "SLAM: N nodes of K keyframes (M MB kept), ... loops ..., search ms median ..., optimisation
+ * ms median ...; largest backlog ..., tracking waited ... times (... ms), ... loop searches
+ * skipped\n" */
 std::string toText(const SlamStats& s);
 
 class KeyframeSlam {
  public:
   /** Loop candidates are verified with makeRegistration(`odometry`): the product's methods only
    * (throws ConfigError for a baseline or peer). Loads `params.vocabulary` (ConfigError naming
-   * the key and the fault). `live` (a sensor, or a recording played as one): the tracking never
-   * waits for the background loop search; with max_backlog keyframes waiting, a new keyframe
-   * joins the graph without a loop search of its own (SlamStats::searches_skipped). Otherwise
-   * the tracking waits there, and every keyframe is searched. */
+   * the key and the fault). With max_backlog keyframes waiting for the background loop search, a
+   * new keyframe that is not a node goes unsearched (SlamStats::searches_skipped), and a node
+   * takes the place of the oldest waiting keyframe that is not one; with only nodes waiting, a
+   * node joins the graph without a loop search of its own when `live` (a sensor, or a recording
+   * played as one: the tracking never waits), and otherwise the tracking waits for room, so that
+   * every node is searched. */
   KeyframeSlam(const SlamParams& params, const OdometryParams& odometry, bool live = false);
   ~KeyframeSlam();
   KeyframeSlam(const KeyframeSlam&) = delete;
@@ -89,27 +109,44 @@ class KeyframeSlam {
 
  private:
   struct Job {
-    std::size_t id = 0;
+    std::size_t id = 0;  //!< the node: this keyframe's, or the one it follows (node = false)
+    std::size_t frame_index = 0;
     std::shared_ptr<Frame> frame;
-    bool first = true;          //!< the first keyframe: no odometry edge
-    PoseGraphEdge odometry;     //!< from the previous keyframe
-    mrpt::poses::CPose3D pose;  //!< tracker's estimate (the first node only)
-    bool search = true;         //!< false: a node and its odometry edge, no loop search
+    /** false: a keyframe of the tracker that is not a node (node_spacing): searched for loops,
+     * which join its node through `in_node`, then forgotten */
+    bool node = true;
+    mrpt::poses::CPose3D in_node;  //!< node = false: the keyframe's pose in its node's
+    bool first = true;             //!< the first keyframe: no odometry edge
+    PoseGraphEdge odometry;        //!< from the previous node
+    mrpt::poses::CPose3D pose;     //!< tracker's estimate (the first node only)
+    bool search = true;            //!< false: a node and its odometry edge, no loop search
   };
   struct Place {
     std::size_t keyframe;
     mrpt::poses::CPose3D relative;  //!< the frame's pose in its keyframe's
   };
+  /** A job for the loop search: the tracker's keyframe (result `r`), a new node or not. */
+  void addJob(const FrameResult& r, const RgbdOdometry& tracker, bool node);
   void work();
   void process(Job job);
+  /** A keyframe whose loops are searched: a node, or one that follows a node (Job::node). */
+  struct Query {
+    Frame& frame;
+    std::size_t node;                     //!< its node
+    bool is_node;                         //!< the node itself
+    const mrpt::poses::CPose3D& in_node;  //!< its pose in its node's (identity: the node)
+    const BowVector& words;
+  };
   struct Candidate {
     std::size_t keyframe;
     bool by_appearance;  //!< not near enough by position
   };
-  std::vector<Candidate> candidates(std::size_t id) const;
-  /** Older keyframes that look like keyframe `id`, most alike first. */
-  std::vector<std::size_t> alike(std::size_t id) const;
-  std::optional<PoseGraphEdge> verify(std::size_t id, std::size_t candidate);
+  std::vector<Candidate> candidates(const Query& q) const;
+  /** Older keyframes that look like `q`, most alike first. */
+  std::vector<std::size_t> alike(const Query& q) const;
+  /** The loop edge from `candidate` to q's node, if `q` registers with it and lands near where
+   * the graph puts it. */
+  std::optional<PoseGraphEdge> verify(const Query& q, std::size_t candidate);
   /** Keyframe `id` ready to be a registration's reference (its pyramids' derivatives made). */
   Frame& reference(std::size_t id);
   void applyOptimization(RgbdOdometry& tracker);
@@ -124,9 +161,13 @@ class KeyframeSlam {
   OdometryParams m_odometry;
   // tracking thread
   std::vector<Place> m_places;                     //!< per frame
-  std::vector<mrpt::poses::CPose3D> m_tracker_kf;  //!< keyframe poses as the tracker has them
-  std::vector<std::size_t> m_keyframe_frame;       //!< frame index of each keyframe
-  std::size_t m_applied = 0;                       //!< optimisations applied to the tracker
+  std::vector<mrpt::poses::CPose3D> m_tracker_kf;  //!< node poses as the tracker has them
+  std::vector<std::size_t> m_keyframe_frame;       //!< frame index of each node
+  /** [m^2] variance of the odometry from the last node to the tracker's keyframe (translation;
+   * the tracker's keyframes that were not made nodes, node_spacing) */
+  double m_chain_variance = 0;
+  std::size_t m_tracker_keyframes = 0;
+  std::size_t m_applied = 0;  //!< optimisations applied to the tracker
   // worker (the graph, the keyframes and the registration); m_mutex guards what both touch
   std::unique_ptr<Registration> m_registration;
   std::vector<std::shared_ptr<Frame>> m_keyframes;
@@ -136,6 +177,8 @@ class KeyframeSlam {
   std::optional<Vocabulary> m_vocabulary;
   std::vector<BowVector> m_words;  //!< per keyframe (empty without ORB features)
   std::vector<double> m_path;      //!< [m] per keyframe: path from the first (+ 1.5 m x angle)
+  /** per node: the older nodes a loop edge links it with */
+  std::vector<std::vector<std::size_t>> m_linked;
   PoseGraph m_graph;
   mutable std::mutex m_mutex;
   std::condition_variable m_wake, m_idle;

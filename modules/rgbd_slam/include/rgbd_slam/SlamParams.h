@@ -10,11 +10,28 @@ namespace hrgbd {
 struct SlamParams : public Params<SlamParams> {
   bool enabled = true;     //!< false: the odometry alone, exactly as the tracker gives it
   bool background = true;  //!< loop search and optimisation in a thread beside the tracking
-  /** [keyframes] with this many keyframes waiting for the background loop search, the tracking
-   * waits for it: memory and delay stay bounded and no keyframe goes unsearched. Live (a sensor,
-   * or a recording played as one) it never waits: a keyframe arriving then joins the graph
-   * without a loop search of its own (KeyframeSlam's `live`). */
+  /** [keyframes] with this many keyframes waiting for the background loop search, a keyframe
+   * of the tracker that is not a node goes unsearched, and a node takes the place of the oldest
+   * waiting one that is not; with only nodes waiting, a node makes the tracking wait (memory and
+   * delay stay bounded and every node is searched), except live (a sensor, or a recording played
+   * as one: KeyframeSlam's `live`), where it joins the graph without a search of its own. */
   int max_backlog = 16;
+  /** [m] a keyframe of the tracker becomes a node of the graph when its view is at least this far
+   * from the last node's (translation plus rotation over a 1.5 m lever arm); the tracker's
+   * keyframes in between chain the odometry edge (their variances add up) and are searched for
+   * loops too, which join their node, but are not kept. The tracker keeps its own keyframes
+   * (OdometryParams::keyframe_max_translation) as references; what the graph keeps (keyframes,
+   * map clouds) and optimises falls with this. 0: every keyframe of the tracker is a node; a
+   * keyframe taken after failures always is. Measured (aligned ATE fr1/rpy, teddy; the 4x
+   * fr1/rpy palindrome's nodes of 432 keyframes): 0: 0.0126, 0.0090, 432; 0.1: 0.0132, 0.0090,
+   * 349; 0.2: 0.0131, 0.0092; 0.25: 0.0132, 0.0095, 147 */
+  double node_spacing = 0.2;
+  /** [chi-square] an accepted loop edge optimises the graph only when the graph disagrees with
+   * it by more than this (the edge's chi-square at the graph's poses; 12.59: 95 % of chi-square
+   * with 6 degrees of freedom); loops the graph already agrees with wait for the next
+   * optimisation (the final one includes every edge). 0: every accepted loop optimises (fr1/rpy:
+   * 100 optimisations, 12.59: 1, aligned ATE 0.0127 and 0.0126 m). */
+  double optimize_min_chi2 = 12.59;
   /** [m] keyframes whose estimated position is within this distance of a new keyframe ... */
   double loop_search_radius = 0.6;
   double loop_search_angle_deg = 35;  //!< [deg] ... and whose view is within this rotation
@@ -67,9 +84,13 @@ struct SlamParams : public Params<SlamParams> {
     HRGBD_PARAM(enabled, "SLAM mode: keyframe pose graph with loop closures");
     HRGBD_PARAM(background, "loop search and optimisation in a background thread");
     HRGBD_PARAM(max_backlog,
-                "[keyframes] waiting for the loop search: the tracking waits (live: "
-                "the keyframe goes unsearched)",
+                "[keyframes] waiting for the loop search: a keyframe not a node goes "
+                "unsearched, a node waits (live: goes unsearched)",
                 Range::atLeast(1));
+    HRGBD_PARAM(node_spacing, "[m] view distance from the last node for a keyframe to be a node",
+                Range::atLeast(0));
+    HRGBD_PARAM(optimize_min_chi2, "[chi-square] a loop the graph disagrees with more: optimise",
+                Range::atLeast(0));
     HRGBD_PARAM(loop_search_radius, "[m] loop candidates: keyframes this near", Range::above(0));
     HRGBD_PARAM(loop_search_angle_deg, "[deg] loop candidates: view within this rotation",
                 Range::openClosed(0, 180));
