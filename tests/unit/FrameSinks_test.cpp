@@ -187,6 +187,15 @@ TEST(ColouredMapSink, InSlamModeOnlyNodesEnterTheMapAndMoveWithTheirCorrection) 
   float x, y, z;
   sink.map().points().getPoint(0, x, y, z);
   EXPECT_LT(z, -45.0f);  // MRPT z is optical -y
+  // with a cloud spacing, a node seen from within it of a kept cloud adds nothing
+  hrgbd::ColouredMapSink spaced(hrgbd::MapParams(), {}, true, 0.1);
+  spaced.add(*obs, r);
+  auto near = result(2, 0.05, kOk), far = result(3, 0.5, kOk);
+  near.keyframe = near.node = far.keyframe = far.node = true;
+  spaced.add(*obs, near);
+  EXPECT_EQ(spaced.map().size(), points);
+  spaced.add(*obs, far);
+  EXPECT_GT(spaced.map().size(), points);
   hrgbd::ColouredMap frozen;
   frozen.insert(*obs, mrpt::poses::CPose3D());
   frozen.freeze();

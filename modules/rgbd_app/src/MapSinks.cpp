@@ -11,12 +11,18 @@
 #include <stdexcept>
 
 #include "rgbd_core/GzOutput.h"
+#include "rgbd_core/PoseGap.h"
 #include "rgbd_core/Trajectory.h"
+#include "rgbd_odometry/RigidFit.h"
 
 namespace hrgbd {
 
-ColouredMapSink::ColouredMapSink(const MapParams& params, MapFiles files, bool keyframes_only)
-    : m_map(params), m_files(std::move(files)), m_keyframes_only(keyframes_only) {}
+ColouredMapSink::ColouredMapSink(const MapParams& params, MapFiles files, bool keyframes_only,
+                                 double cloud_spacing)
+    : m_map(params),
+      m_files(std::move(files)),
+      m_keyframes_only(keyframes_only),
+      m_cloud_spacing(cloud_spacing) {}
 
 void ColouredMapSink::add(const mrpt::obs::CObservation3DRangeScan& obs, const FrameResult& r) {
   m_path.push_back(opticalToMrptWorld(r.pose));
@@ -24,6 +30,9 @@ void ColouredMapSink::add(const mrpt::obs::CObservation3DRangeScan& obs, const F
   if (!m_keyframes_only) {
     m_map.insert(obs, r.pose);
   } else if (r.node) {
+    const auto here = toIsometry(m_path.back());
+    for (const auto& kept : m_clouds)
+      if (viewDistance(poseGap(toIsometry(m_path[kept.first]), here)) < m_cloud_spacing) return;
     ColouredMap cloud(m_map.params());
     cloud.insert(obs, mrpt::poses::CPose3D());
     m_map.insert(cloud, r.pose);

@@ -148,8 +148,10 @@ PlaybackSinks makeSinks(const PlaybackJob& job, const FrameSource& source,
   if (!o.output_rawlog.empty()) s.rawlog = std::make_unique<PosedRawlogSink>(o.output_rawlog);
   if (!o.simplemap.empty()) s.simplemap = std::make_unique<SimplemapSink>(o.simplemap);
   if (!o.map_ply.empty() || !o.map_scene.empty())
+    // in SLAM mode, a node's cloud where the graph culls nodes (KeyframeSlam::redundant()) adds
+    // nothing to the map
     s.map = std::make_unique<ColouredMapSink>(map_params, MapFiles{o.map_ply, o.map_scene},
-                                              job.slam.enabled);
+                                              job.slam.enabled, 0.5 * job.slam.node_spacing);
   return s;
 }
 

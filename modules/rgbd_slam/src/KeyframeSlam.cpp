@@ -78,10 +78,10 @@ std::string toText(const SlamStats& s) {
   }
   std::ostringstream out;
   out << std::fixed << std::setprecision(1) << "SLAM: " << s.keyframes << " nodes of "
-      << s.tracker_keyframes << " keyframes (" << s.kept_bytes / 1e6 << " MB kept), "
-      << s.candidates << " loop candidates verified (" << s.by_appearance << " by appearance), "
-      << s.loops_accepted << " loops accepted (" << s.appearance_loops << " by appearance), "
-      << s.loops_dropped << " dropped as inconsistent; loop search median "
+      << s.tracker_keyframes << " keyframes (" << s.culled << " culled; " << s.kept_bytes / 1e6
+      << " MB kept), " << s.candidates << " loop candidates verified (" << s.by_appearance
+      << " by appearance), " << s.loops_accepted << " loops accepted (" << s.appearance_loops
+      << " by appearance), " << s.loops_dropped << " dropped as inconsistent; loop search median "
       << (search.empty() ? 0.0 : median(search)) << " ms per keyframe, " << s.optimizations
       << " optimisations, median " << (optimize.empty() ? 0.0 : median(optimize)) << " ms (final "
       << s.final_optimize_ms << " ms); largest backlog " << s.largest_backlog
@@ -285,10 +285,19 @@ void KeyframeSlam::process(Job job) {
     return 0;
   });
   std::size_t kept = 0;
+  bool culled = false;
   if (job.node) {
-    // searched: from now on only a reference (reference() unpacks a copy)
-    if (m_keyframes.back()->dense) packLevels(*m_keyframes.back()->dense);
-    kept = keptBytes(*m_keyframes.back());
+    culled = job.search && redundant(id);
+    if (culled) {
+      // an older node sees the same view and a loop ties this one to it: a pose and its edges
+      // are all the graph needs of it (never a candidate again)
+      m_keyframes.back().reset();
+      m_words.back().clear();
+    } else {
+      // searched: from now on only a reference (reference() unpacks a copy)
+      if (m_keyframes.back()->dense) packLevels(*m_keyframes.back()->dense);
+      kept = keptBytes(*m_keyframes.back());
+    }
   }
   std::optional<PoseGraphOptimization> opt;
   if (work.accepted > 0 && disagreement >= m_params.optimize_min_chi2)
@@ -299,6 +308,7 @@ void KeyframeSlam::process(Job job) {
   std::lock_guard<std::mutex> lock(m_mutex);
   m_stats.keyframes = m_graph.nodes();
   m_stats.kept_bytes += kept;
+  m_stats.culled += culled;
   m_stats.candidates += work.verified;
   m_stats.by_appearance += by_appearance;
   m_stats.loops_accepted += work.accepted;
@@ -309,6 +319,15 @@ void KeyframeSlam::process(Job job) {
     ++m_stats.optimizations;
     publish();
   }
+}
+
+bool KeyframeSlam::redundant(std::size_t id) const {
+  const auto& edges = m_graph.edges();
+  // this search's loop edges are the last ones, all into `id`
+  for (auto e = edges.rbegin(); e != edges.rend() && e->loop && e->to == id; ++e)
+    if (viewDistance(e->relative) < 0.5 * m_params.node_spacing && m_keyframes[e->from])
+      return true;
+  return false;
 }
 
 void KeyframeSlam::publish() {

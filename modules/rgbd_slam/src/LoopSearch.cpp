@@ -24,6 +24,7 @@ std::vector<KeyframeSlam::Candidate> KeyframeSlam::candidates(const Query& q) co
   const auto here = m_graph.pose(q.node) + q.in_node;
   std::vector<std::pair<double, std::size_t>> near;  // (view distance, keyframe)
   for (std::size_t j = 0; j + sep <= q.node; ++j) {
+    if (!m_keyframes[j]) continue;  // culled: a pose only
     const auto d = (-m_graph.pose(j)) + here;
     const double metres = d.norm(), angle = angleRad(d);
     if (metres <= m_params.loop_search_radius &&
@@ -73,6 +74,7 @@ std::vector<std::size_t> KeyframeSlam::alike(const Query& q) const {
   if (expected <= 0) return {};
   std::vector<std::pair<double, std::size_t>> scored;
   for (std::size_t j = 0; j + sep <= q.node; ++j) {
+    if (!m_keyframes[j]) continue;  // culled: a pose only
     const double s = bowScore(q.words, m_words[j]) / expected;
     if (s >= m_params.loop_min_appearance) scored.emplace_back(-s, j);
   }

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "rgbd_core/PoseGap.h"
 #include "rgbd_odometry/RigidFit.h"
 #include "rgbd_slam/PoseGraph.h"
 #include "rgbd_slam/SlamParams.h"
@@ -18,11 +19,11 @@ inline double angleRad(const mrpt::poses::CPose3D& d) {
 }
 
 /** [m] typical depth: rotation sigma = translation sigma / lever */
-inline constexpr double kLever = 1.5;
+inline constexpr double kLever = kViewLever;
 
-/** [m] how far apart two views are: the translation plus the rotation over the lever arm */
+/** [m] how far apart two views are (PoseGap.h) */
 inline double viewDistance(const mrpt::poses::CPose3D& d) {
-  return d.norm() + kLever * angleRad(d);
+  return hrgbd::viewDistance(PoseGap{d.norm(), angleRad(d)});
 }
 
 /** [m] translation sigma of a registration on `inliers` sparse inliers (dense-only: as 10); its

@@ -27,9 +27,11 @@ class ColouredMapSink : public FrameSink {
  public:
   /** `files` are written by finish(); none for a map that is only shown or saved on demand.
    * `keyframes_only` (SLAM mode): only the pose graph's nodes (FrameResult::node) enter the map,
-   * each kept as its own cloud so that correct() rebuilds the map at the optimised poses. */
+   * each kept as its own cloud so that correct() rebuilds the map at the optimised poses; a node
+   * whose view is within `cloud_spacing` [m] (PoseGap.h's viewDistance) of a kept cloud's adds
+   * nothing: the map's memory follows the views of the scene, not the time spent in them. */
   explicit ColouredMapSink(const MapParams& params, MapFiles files = {},
-                           bool keyframes_only = false);
+                           bool keyframes_only = false, double cloud_spacing = 0);
   /** Registered frames (nodes only, see above) enter the map; every frame extends the
    * path. */
   void add(const mrpt::obs::CObservation3DRangeScan& obs, const FrameResult& r) override;
@@ -53,6 +55,7 @@ class ColouredMapSink : public FrameSink {
   ColouredMap m_map;
   MapFiles m_files;
   bool m_keyframes_only;
+  double m_cloud_spacing;
   std::vector<mrpt::poses::CPose3D> m_path;
   std::vector<std::pair<std::size_t, ColouredMap>> m_clouds;  //!< (frame, cloud in its camera)
   std::vector<std::pair<std::size_t, std::size_t>> m_loops;

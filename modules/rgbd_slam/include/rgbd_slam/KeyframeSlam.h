@@ -51,11 +51,13 @@ struct KeyframeWork {
 struct SlamStats {
   std::size_t tracker_keyframes = 0;  //!< keyframes the tracker took
   std::size_t keyframes = 0;          //!< of them: nodes of the graph ([Slam] node_spacing)
-  std::size_t candidates = 0;         //!< loop candidates verified
-  std::size_t by_appearance = 0;      //!< of them: found by appearance only (not by position)
-  std::size_t loops_accepted = 0;     //!< passed verification and became loop edges
-  std::size_t appearance_loops = 0;   //!< of them: candidates by appearance only
-  std::size_t loops_dropped = 0;      //!< loop edges dropped as inconsistent by the optimisation
+  /** of the nodes: culled after their loop search (KeyframeSlam::redundant()): poses only */
+  std::size_t culled = 0;
+  std::size_t candidates = 0;        //!< loop candidates verified
+  std::size_t by_appearance = 0;     //!< of them: found by appearance only (not by position)
+  std::size_t loops_accepted = 0;    //!< passed verification and became loop edges
+  std::size_t appearance_loops = 0;  //!< of them: candidates by appearance only
+  std::size_t loops_dropped = 0;     //!< loop edges dropped as inconsistent by the optimisation
   std::size_t optimizations = 0;
   std::size_t largest_backlog = 0;  //!< most keyframes ever waiting for the loop search
   std::size_t backlog_waits = 0;    //!< times the tracking waited for it (max_backlog reached)
@@ -147,6 +149,11 @@ class KeyframeSlam {
   /** The loop edge from `candidate` to q's node, if `q` registers with it and lands near where
    * the graph puts it. */
   std::optional<PoseGraphEdge> verify(const Query& q, std::size_t candidate);
+  /** Node `id`, just searched, is redundant: one of its new loops ties it to a kept node less than
+   * half node_spacing away in view. Such a node is culled: it keeps its pose and edges (frames
+   * follow it, loops link it) but not its features and pyramids, and is no candidate: memory
+   * follows the views of the scene, not the time spent in them. */
+  bool redundant(std::size_t id) const;
   /** Keyframe `id` ready to be a registration's reference (its pyramids' derivatives made). */
   Frame& reference(std::size_t id);
   void applyOptimization(RgbdOdometry& tracker);
@@ -170,7 +177,7 @@ class KeyframeSlam {
   std::size_t m_applied = 0;  //!< optimisations applied to the tracker
   // worker (the graph, the keyframes and the registration); m_mutex guards what both touch
   std::unique_ptr<Registration> m_registration;
-  std::vector<std::shared_ptr<Frame>> m_keyframes;
+  std::vector<std::shared_ptr<Frame>> m_keyframes;  //!< per node; null: culled
   /** The last keyframes made references, the most recent first: consecutive keyframes mostly
    * have the same candidates */
   std::deque<std::pair<std::size_t, std::shared_ptr<Frame>>> m_references;

@@ -21,8 +21,11 @@ struct SlamParams : public Params<SlamParams> {
    * keyframes in between chain the odometry edge (their variances add up) and are searched for
    * loops too, which join their node, but are not kept. The tracker keeps its own keyframes
    * (OdometryParams::keyframe_max_translation) as references; what the graph keeps (keyframes,
-   * map clouds) and optimises falls with this. 0: every keyframe of the tracker is a node; a
-   * keyframe taken after failures always is. Measured (aligned ATE fr1/rpy, teddy; the 4x
+   * map clouds) and optimises falls with this. A node that a loop ties to a kept node less than
+   * half this away in view is culled after its search: a pose and edges only, no candidate, no
+   * map cloud (KeyframeSlam::redundant()), so that memory follows the views of the scene. 0:
+   * every keyframe of the tracker is a node, none culled; a keyframe taken after failures is
+   * always a node. Measured (aligned ATE fr1/rpy, teddy; the 4x
    * fr1/rpy palindrome's nodes of 432 keyframes): 0: 0.0126, 0.0090, 432; 0.1: 0.0132, 0.0090,
    * 349; 0.2: 0.0131, 0.0092; 0.25: 0.0132, 0.0095, 147 */
   double node_spacing = 0.2;
