@@ -27,4 +27,6 @@ function(hrgbd_install_package)
                 ${PROJECT_SOURCE_DIR}/cmake/hrgbdDependencies.cmake
           DESTINATION ${HRGBD_CMAKE_INSTALL_DIR})
   install(FILES ${PROJECT_SOURCE_DIR}/config.ini DESTINATION ${CMAKE_INSTALL_DATADIR}/hrgbd)
+  install(FILES ${PROJECT_SOURCE_DIR}/LICENSE ${PROJECT_SOURCE_DIR}/CITATION.cff
+          DESTINATION ${CMAKE_INSTALL_DOCDIR})
 endfunction()
