@@ -81,6 +81,27 @@ TEST(PoseGraph, LoopTakesOutMostOfTheOdometrysDrift) {
   EXPECT_TRUE(r.dropped.empty());
 }
 
+TEST(PoseGraph, AWindowMovesItsNodesOnlyAndHoldsTheRest) {
+  // the drifting square with its loop, optimised with nodes 2 and 3 free: 0 and 1 stay exactly
+  // where they were; 2 and 3 move onto the corners their edges to the held nodes give (corner 1
+  // drifted, so they land 2 cm / 1 deg off it: the window takes its old nodes as they are)
+  const auto truth = square();
+  auto g = driftingSquare(truth);
+  g.addEdge(edge(truth, 0, 3, true));
+  const auto held = g.pose(1);
+  const double before = ((-truth[3]) + g.pose(3)).norm();
+  const auto r = g.optimize(22.46, 100, 2);
+  EXPECT_GT(r.iterations, 0u);
+  EXPECT_EQ(g.pose(0).asVectorVal(), truth[0].asVectorVal());
+  EXPECT_EQ(g.pose(1).asVectorVal(), held.asVectorVal());
+  EXPECT_LT(((-truth[3]) + g.pose(3)).norm(), 0.5 * before);
+  // the whole graph from there: every corner
+  g.optimize(22.46, 100);
+  EXPECT_LT(maxError(g, truth), 0.001);
+  // a window beyond the last node frees nothing
+  EXPECT_EQ(g.optimize(22.46, 100, 4).iterations, 0u);
+}
+
 TEST(PoseGraph, WrongLoopAmongCorrectOnesIsDropped) {
   const auto truth = square();
   auto g = driftingSquare(truth);

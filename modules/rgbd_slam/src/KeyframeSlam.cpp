@@ -300,8 +300,15 @@ void KeyframeSlam::process(Job job) {
     }
   }
   std::optional<PoseGraphOptimization> opt;
-  if (work.accepted > 0 && disagreement >= m_params.optimize_min_chi2)
-    opt = m_graph.optimize(m_params.loop_max_chi2, m_params.optimizer_iterations);
+  if (work.accepted > 0 && disagreement >= m_params.optimize_min_chi2) {
+    // the newest nodes only, unless the loop closes a cycle the window could only bend
+    const auto window = static_cast<std::size_t>(m_params.optimize_window);
+    const std::size_t first_free =
+        window == 0 || disagreement > m_params.loop_max_chi2 || m_graph.nodes() <= window
+            ? 1
+            : m_graph.nodes() - window;
+    opt = m_graph.optimize(m_params.loop_max_chi2, m_params.optimizer_iterations, first_free);
+  }
   work.nodes = m_graph.nodes();
   work.edges = m_graph.edges().size();
   if (opt) work.optimized = true, work.optimize_ms = opt->ms, work.iterations = opt->iterations;

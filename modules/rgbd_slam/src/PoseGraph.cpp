@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <set>
 #include <stdexcept>
 
 #include "rgbd_core/OutputFile.h"
@@ -50,28 +51,44 @@ std::size_t PoseGraph::activeLoops() const {
   return n;
 }
 
-mrpt::graphs::CNetworkOfPoses3DInf PoseGraph::toMrpt() const {
+mrpt::graphs::CNetworkOfPoses3DInf PoseGraph::toMrpt(std::size_t first_free) const {
   mrpt::graphs::CNetworkOfPoses3DInf g;
   g.root = 0;
-  for (std::size_t i = 0; i < m_poses.size(); ++i) g.nodes[i] = m_poses[i];
+  // with a window, only the nodes its edges reach (the others would only be copied)
+  std::vector<bool> used(m_poses.size(), first_free <= 1);
   for (std::size_t i = 0; i < m_edges.size(); ++i) {
-    if (!m_active[i]) continue;
     const auto& e = m_edges[i];
+    if (m_active[i] && std::max(e.from, e.to) >= first_free) used[e.from] = used[e.to] = true;
+  }
+  used[0] = true;
+  for (std::size_t i = 0; i < m_poses.size(); ++i)
+    if (used[i]) g.nodes[i] = m_poses[i];
+  for (std::size_t i = 0; i < m_edges.size(); ++i) {
+    const auto& e = m_edges[i];
+    if (!m_active[i] || !used[e.from] || !used[e.to]) continue;
+    if (first_free > 1 && std::max(e.from, e.to) < first_free) continue;
     g.insertEdge(e.from, e.to, mrpt::poses::CPose3DPDFGaussianInf(e.relative, e.information));
   }
   return g;
 }
 
-PoseGraphOptimization PoseGraph::optimize(double max_chi2, int max_iterations) {
+PoseGraphOptimization PoseGraph::optimize(double max_chi2, int max_iterations,
+                                          std::size_t first_free) {
   PoseGraphOptimization out;
+  first_free = std::max<std::size_t>(first_free, 1);
+  if (first_free >= m_poses.size()) return out;  // nothing free
+  // an edge takes part when it touches a free node
+  auto touches = [&](const PoseGraphEdge& e) { return std::max(e.from, e.to) >= first_free; };
+  std::set<mrpt::graphs::TNodeID> free;
+  for (std::size_t i = first_free; i < m_poses.size(); ++i) free.insert(free.end(), i);
   double ms = 0;
   timed(ms, [&] {
     mrpt::containers::yaml extra;
     extra["max_iterations"] = max_iterations;
     for (;;) {
-      auto g = toMrpt();
+      auto g = toMrpt(first_free);
       mrpt::graphslam::TResultInfoSpaLevMarq info;
-      mrpt::graphslam::optimize_graph_spa_levmarq(g, info, nullptr, extra);
+      mrpt::graphslam::optimize_graph_spa_levmarq(g, info, first_free > 1 ? &free : nullptr, extra);
       out.iterations += info.num_iters;
       const bool finite = std::all_of(g.nodes.begin(), g.nodes.end(), [](const auto& n) {
         return n.second.asVectorVal().array().isFinite().all();
@@ -79,20 +96,20 @@ PoseGraphOptimization PoseGraph::optimize(double max_chi2, int max_iterations) {
       if (!finite) {  // diverged: the poses stay as they were, the newest loop goes
         std::size_t newest = m_edges.size();
         for (std::size_t i = 0; i < m_edges.size(); ++i)
-          if (m_edges[i].loop && m_active[i]) newest = i;
+          if (m_edges[i].loop && m_active[i] && touches(m_edges[i])) newest = i;
         if (newest == m_edges.size()) break;
         m_active[newest] = false;
         out.dropped.push_back(newest);
         continue;
       }
       // re-orthonormalised: the optimiser's compositions drift off SO(3) by rounding
-      for (std::size_t i = 0; i < m_poses.size(); ++i)
+      for (std::size_t i = first_free; i < m_poses.size(); ++i)
         m_poses[i] = toPose(toIsometry(g.nodes.at(i)));
       // the least consistent loop edge, if beyond the limit, goes; then optimise again
       std::size_t worst = m_edges.size();
       double worst_chi2 = 0;
       for (std::size_t i = 0; i < m_edges.size(); ++i) {
-        if (!m_edges[i].loop || !m_active[i]) continue;
+        if (!m_edges[i].loop || !m_active[i] || !touches(m_edges[i])) continue;
         const double c = edgeChi2(m_edges[i], m_poses[m_edges[i].from], m_poses[m_edges[i].to]);
         if (c > worst_chi2) worst_chi2 = c, worst = i;
       }

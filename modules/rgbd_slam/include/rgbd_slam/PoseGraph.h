@@ -44,9 +44,12 @@ class PoseGraph {
   /** Adds node `id` = nodes() with its initial pose; node 0 is the fixed origin. */
   std::size_t addNode(const mrpt::poses::CPose3D& pose);
   void addEdge(const PoseGraphEdge& edge);
-  /** Optimises every node but the first; drops inconsistent loop edges (see file comment), each
-   * reported once in the result of the optimisation that dropped it. */
-  PoseGraphOptimization optimize(double max_chi2, int max_iterations);
+  /** Optimises every node from `first_free` on (node 0, the origin, always stays), the others
+   * held where they are: only the edges that touch a free node take part, so the cost follows
+   * the window, not the graph. Drops inconsistent loop edges (see file comment; among those
+   * that touch a free node), each reported once in the result of the optimisation that dropped
+   * it. */
+  PoseGraphOptimization optimize(double max_chi2, int max_iterations, std::size_t first_free = 1);
   std::size_t nodes() const { return m_poses.size(); }
   const mrpt::poses::CPose3D& pose(std::size_t id) const { return m_poses.at(id); }
   const std::vector<mrpt::poses::CPose3D>& poses() const { return m_poses; }
@@ -54,8 +57,9 @@ class PoseGraph {
   /** Whether edges()[i] takes part (false once dropped). */
   bool active(std::size_t i) const { return m_active.at(i); }
   std::size_t activeLoops() const;
-  /** The graph as MRPT's CNetworkOfPoses3DInf (active edges only). */
-  mrpt::graphs::CNetworkOfPoses3DInf toMrpt() const;
+  /** The graph as MRPT's CNetworkOfPoses3DInf (active edges only); with `first_free` > 1, only
+   * the edges that touch a node from `first_free` on and the nodes they reach. */
+  mrpt::graphs::CNetworkOfPoses3DInf toMrpt(std::size_t first_free = 1) const;
   /** Writes the graph in MRPT's text format (VERTEX_SE3:QUAT / EDGE_SE3:QUAT lines, as
    * CNetworkOfPoses::saveToTextFile() writes and graph-slam loads), in full or not at all;
    * throws naming the file on failure. */

@@ -35,6 +35,11 @@ struct SlamParams : public Params<SlamParams> {
    * optimisation (the final one includes every edge). 0: every accepted loop optimises (fr1/rpy:
    * 100 optimisations, 12.59: 1, aligned ATE 0.0127 and 0.0126 m). */
   double optimize_min_chi2 = 12.59;
+  /** [nodes] an optimisation during the run frees only this many newest nodes, the older held
+   * where they are (PoseGraph::optimize's window): its cost follows the window, not the map.
+   * A loop the graph disagrees with beyond loop_max_chi2 (a cycle closed after a long drift)
+   * optimises the whole graph, as does the final optimisation. 0: always the whole graph. */
+  int optimize_window = 50;
   /** [m] keyframes whose estimated position is within this distance of a new keyframe ... */
   double loop_search_radius = 0.6;
   double loop_search_angle_deg = 35;  //!< [deg] ... and whose view is within this rotation
@@ -93,6 +98,8 @@ struct SlamParams : public Params<SlamParams> {
     HRGBD_PARAM(node_spacing, "[m] view distance from the last node for a keyframe to be a node",
                 Range::atLeast(0));
     HRGBD_PARAM(optimize_min_chi2, "[chi-square] a loop the graph disagrees with more: optimise",
+                Range::atLeast(0));
+    HRGBD_PARAM(optimize_window, "[nodes] newest nodes freed by an optimisation (0: all)",
                 Range::atLeast(0));
     HRGBD_PARAM(loop_search_radius, "[m] loop candidates: keyframes this near", Range::above(0));
     HRGBD_PARAM(loop_search_angle_deg, "[deg] loop candidates: view within this rotation",
