@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <iomanip>
+#include <optional>
 #include <sstream>
 
 #include "rgbd_core/PoseGap.h"
@@ -47,6 +48,25 @@ DepthCheck checkDepth(const Frame& cur, const Frame& ref, const Eigen::Isometry3
   return c;
 }
 
+// Why the refined motion d is not constrained by the data (DenseParams::min_texture_pairs), or
+// nothing.
+std::optional<std::string> unconstrained(const DenseResult& d, const DenseParams& p) {
+  const bool textured = d.photometric_pairs >= static_cast<std::size_t>(p.min_texture_pairs) &&
+                        d.texture_isotropy >= p.min_texture_isotropy;
+  if (textured || d.normal_spread >= p.min_normal_spread) return std::nullopt;
+  std::ostringstream why;
+  why << std::setprecision(2);
+  if (d.photometric_pairs < static_cast<std::size_t>(p.min_texture_pairs))
+    why << d.photometric_pairs << " intensity pairs (< min_texture_pairs " << p.min_texture_pairs
+        << ")";
+  else
+    why << "texture in one direction (isotropy " << d.texture_isotropy << " < min_texture_isotropy "
+        << p.min_texture_isotropy << ")";
+  why << " and surfaces facing fewer than three directions (normal spread " << d.normal_spread
+      << " < min_normal_spread " << p.min_normal_spread << ")";
+  return why.str();
+}
+
 }  // namespace
 
 DenseRefined::DenseRefined(std::unique_ptr<Registration> inner, const DenseParams& params,
@@ -90,10 +110,9 @@ RegistrationResult DenseRefined::align(Frame& cur, Frame& ref) {
     if (!r.ok()) r.detail += "; " + d.detail;
     return r;  // too little to refine with: the sparse estimate stands (or the failure)
   }
-  if (!r.ok() && d.photometric_pairs < static_cast<std::size_t>(m_params.min_pixels) &&
-      d.normal_spread < m_params.min_normal_spread) {
-    r.detail += "; dense: too little texture and a plain surface (normal spread " +
-                std::to_string(d.normal_spread) + ")";
+  if (const auto why = unconstrained(d, m_params)) {
+    r.status = FrameResult::Status::Degenerate;
+    r.detail = "dense: the scene does not constrain the motion: " + *why;
     return r;
   }
   // A refinement that no sparse estimate supports must explain the reference's depth: one alone,

@@ -95,6 +95,8 @@ const char* toString(FrameResult::Status s) {
       return "large_residuals";
     case S::ImplausibleMotion:
       return "implausible_motion";
+    case S::Degenerate:
+      return "degenerate";
   }
   return "?";
 }
@@ -117,6 +119,7 @@ void RgbdOdometry::reset() {
   m_twist.reset();
   m_previous_registered = false;
   m_failures = 0;
+  m_flagged_run = 0;
   m_last_t.reset();
   m_mean_interval = 0;
   m_after_gap = false;
@@ -177,6 +180,11 @@ FrameResult RgbdOdometry::predict(FrameResult r, FrameResult::Status why, std::s
   m_previous_registered = false;
   m_twist.reset();  // measured again once two frames in a row have registered
   ++m_failures;
+  ++m_flagged_run;
+  // beyond max_predicted_frames the motion is no longer extrapolated: the pose and the next
+  // frames' prediction hold
+  if (m_params.max_predicted_frames > 0 && m_flagged_run > m_params.max_predicted_frames)
+    m_velocity = mrpt::poses::CPose3D();
   if (m_params.on_failure == FailurePolicy::ConstantVelocity) m_pose = m_pose + m_velocity;
   r.pose = m_pose;
   return r;
@@ -240,6 +248,7 @@ FrameResult RgbdOdometry::accept(Frame frame, const mrpt::poses::CPose3D& pose, 
   }
   m_previous_registered = true;
   m_failures = 0;
+  m_flagged_run = 0;
   m_after_gap = false;
   m_pose = pose;
   if (keyframe) {

@@ -18,13 +18,14 @@ struct QuadData {
   Eigen::Vector3d o, n, ud, vd, colour;  // ud, vd: unit edge directions
   double ul, vl, scale;
   int texture;
+  bool stripes;
 };
 
 std::vector<QuadData> prepareQuads(const Scene& scene) {
   std::vector<QuadData> qs;
   for (const auto& q : scene.quads)
     qs.push_back({q.origin, q.u.cross(q.v).normalized(), q.u.normalized(), q.v.normalized(),
-                  q.colour, q.u.norm(), q.v.norm(), q.texture_scale, q.texture});
+                  q.colour, q.u.norm(), q.v.norm(), q.texture_scale, q.texture, q.stripes});
   return qs;
 }
 
@@ -112,7 +113,8 @@ Surface quadSurface(const QuadData& q, double a, double b) {
   Surface s;
   s.normal = q.n;
   s.albedo = q.colour;
-  if (q.texture >= 0) s.albedo = s.albedo.cwiseProduct(textureColour(q.texture, a, b, q.scale));
+  if (q.texture >= 0)
+    s.albedo = s.albedo.cwiseProduct(textureColour(q.texture, a, q.stripes ? 0 : b, q.scale));
   s.lambert = std::abs(s.normal.dot(lightDirection()));  // planes are lit from both sides
   return s;
 }

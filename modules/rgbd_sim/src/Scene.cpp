@@ -9,7 +9,7 @@ namespace {
 using V = Eigen::Vector3d;
 
 Quad quad(V o, V u, V v, V colour, int texture, double scale = 12.0) {
-  return {o, u, v, colour, texture, scale};
+  return {o, u, v, colour, texture, scale, false};
 }
 
 // A zig-zag of panels along x, standing on the floor: each panel 0.5 m wide, 0.8 m tall,
@@ -64,6 +64,30 @@ void addWall(Scene& s) {
   s.quads.push_back(quad(V(-4, 0, -1), V(8, 0, 0), V(0, 0, 4), V(0.85, 0.84, 0.80), -1));
   s.look_at = V(0, 0, 1.0);
   s.view_dir = V(0, -1, 0.05);
+}
+
+// A flat wall with vertical stripes (a texture that varies along x only): no structure, and no
+// texture along the stripes.
+void addStripes(Scene& s) {
+  Quad q = quad(V(-4, 0, -1), V(8, 0, 0), V(0, 0, 4), V(0.85, 0.84, 0.80), 61, 6.0);
+  q.stripes = true;
+  s.quads.push_back(q);
+  s.look_at = V(0, 0, 1.0);
+  s.view_dir = V(0, -1, 0.05);
+  s.sweep_axis = V(0, 0, 1);  // along the stripes
+}
+
+// A plain corridor 2 m wide and 2.5 m high, 30 m long (its ends beyond the depth range), the
+// camera looking along it and sweeping along it.
+void addCorridor(Scene& s) {
+  const V grey(0.80, 0.80, 0.78);
+  s.quads.push_back(quad(V(-15, -1, 0), V(30, 0, 0), V(0, 2, 0), V(0.55, 0.55, 0.52), -1));
+  s.quads.push_back(quad(V(-15, -1, 2.5), V(30, 0, 0), V(0, 2, 0), grey, -1));
+  s.quads.push_back(quad(V(-15, -1, 0), V(30, 0, 0), V(0, 0, 2.5), grey, -1));
+  s.quads.push_back(quad(V(-15, 1, 0), V(30, 0, 0), V(0, 0, 2.5), grey, -1));
+  s.look_at = V(0, 0, 1.3);
+  s.view_dir = V(1, 0, 0.02);
+  s.sweep_axis = V(1, 0, 0);
 }
 
 // A furry bear-like object made of ellipsoids, centred above (0, 0, 0.75).
@@ -139,8 +163,8 @@ Scene withWalker(Scene s, double t, double speed) {
 }
 
 const std::vector<std::string>& sceneTypes() {
-  static const std::vector<std::string> t{"texture", "structure", "structure_texture",
-                                          "desk",    "wall",      "object"};
+  static const std::vector<std::string> t{"texture", "structure", "structure_texture", "desk",
+                                          "wall",    "object",    "stripes",           "corridor"};
   return t;
 }
 
@@ -158,9 +182,15 @@ Scene makeScene(const std::string& type, bool far) {
     addWall(s);
   else if (type == "object")
     addObjectHall(s);
+  else if (type == "stripes")
+    addStripes(s);
+  else if (type == "corridor")
+    addCorridor(s);
   else
-    throw std::invalid_argument("unknown scene type '" + type +
-                                "' (texture, structure, structure_texture, desk, wall, object)");
+    throw std::invalid_argument(
+        "unknown scene type '" + type +
+        "' (texture, structure, structure_texture, desk, wall, object, stripes, "
+        "corridor)");
   return s;
 }
 

@@ -76,9 +76,10 @@ class HybridRegistration : public Registration {
 /** Any registration followed by the dense refinement (DenseRefinement.h), which starts from its
  * estimate, or from the tracker's prediction when it found none. A refinement that changes the
  * start by more than max_correction[_deg] is not trusted: the frame is flagged (LargeResiduals).
- * A refinement alone (no estimate of the inner registration) must also see surfaces facing three
- * directions where texture is scarce (min_normal_spread) and explain the reference's depth
- * (min_depth_agreement), or the inner registration's failure stands. With `min_inliers` > 0
+ * A scene whose texture and structure leave a direction of the motion free is flagged
+ * (Degenerate: min_texture_pairs). A refinement alone (no estimate of the inner registration)
+ * must also explain the reference's depth (min_depth_agreement), or the inner registration's
+ * failure stands. With `min_inliers` > 0
  * only an inner estimate on at least that many inliers is refined, and the inner result stands
  * otherwise (the SLAM mode's loop verification, which needs as many: refining the others is
  * work thrown away). */

@@ -59,6 +59,9 @@ struct FrameResult {
     TooFewInliers,      //!< pose predicted
     LargeResiduals,     //!< inlier noise scale implausible; pose predicted
     ImplausibleMotion,  //!< estimate beyond max_step_*; pose predicted
+    /** the scene does not constrain every direction of the motion (no texture or texture in one
+     * direction only, and a plane or a corridor): DenseParams::min_texture_pairs; predicted */
+    Degenerate,
   };
   double t = 0;  //!< [s]
   mrpt::poses::CPose3D pose;

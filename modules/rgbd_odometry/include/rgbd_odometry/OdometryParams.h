@@ -99,6 +99,11 @@ struct OdometryParams : public Params<OdometryParams> {
    * after them that could is taken); 0 = never: the keyframe stays until a frame registers against
    * it. The baselines and peers never do this, as published. */
   int keyframe_after_failures = 5;
+  /** [count] on_failure = constant_velocity extrapolates the last motion over at most this many
+   * flagged frames in a row; from the next one on the pose is held (and so is the prediction
+   * that starts the refinement), so that a pause in a long flagged run does not turn into metres.
+   * 0 = extrapolated over any run. */
+  int max_predicted_frames = 5;
   /** [intervals] after a frame that comes more than this many times the mean interval (a running
    * mean) after the previous frame (dropped frames, a sensor that stalled), the frames get no
    * motion prediction as a start of the dense refinement until one registers: across a gap the
@@ -133,6 +138,9 @@ struct OdometryParams : public Params<OdometryParams> {
                 Range::atLeast(0));
     HRGBD_PARAM(keyframe_after_failures,
                 "[count] flagged frames in a row: the last becomes the keyframe (0 = never)",
+                Range::atLeast(0));
+    HRGBD_PARAM(max_predicted_frames,
+                "[count] flagged frames in a row over which the motion is extrapolated (0 = any)",
                 Range::atLeast(0));
     HRGBD_PARAM(prediction_max_gap,
                 "[intervals] no motion prediction after a longer time gap (0 = always, else > 1)",

@@ -66,6 +66,7 @@ class RgbdOdometry {
   std::optional<Eigen::Matrix<double, 6, 1>> m_twist;
   bool m_previous_registered = false;
   int m_failures = 0;              // flagged frames since the last registered one or keyframe
+  int m_flagged_run = 0;           // flagged frames since the last registered one
   std::optional<double> m_last_t;  // [s] the previous frame's time
   double m_mean_interval = 0;      // [s] running mean of the intervals between frames
   double m_interval = 0;           // [s] the latest interval (0: the first frame, or out of order)

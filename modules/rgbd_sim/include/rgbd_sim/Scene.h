@@ -14,6 +14,7 @@ struct Quad {
   Eigen::Vector3d colour{0.7, 0.7, 0.7};  //!< base albedo, RGB in [0, 1]
   int texture = -1;            //!< procedural texture seed; -1 = plain (matte, no texture)
   double texture_scale = 1.0;  //!< [1/m] texture features per metre
+  bool stripes = false;        //!< the texture varies along u only: lines along v
 };
 
 /** An axis-aligned ellipsoid (rounded objects: the fr3/teddy-like scene). */

@@ -17,11 +17,12 @@ namespace hrgbd::sim {
 
 /** Parameters of simulate(). INI section [Simulator]. */
 struct SimParams : public Params<SimParams> {
-  std::string scene = "desk";  //!< texture|structure|structure_texture|desk|wall|object
-  bool far = false;            //!< camera at ~2 m instead of ~1 m
-  int frames = 30;             //!< [count]
-  double fps = 30;             //!< [Hz]
-  int seed = 1;                //!< noise and jitter seed (same seed, same sequence)
+  std::string scene =
+      "desk";        //!< texture|structure|structure_texture|desk|wall|object|stripes|corridor
+  bool far = false;  //!< camera at ~2 m instead of ~1 m
+  int frames = 30;   //!< [count]
+  double fps = 30;   //!< [Hz]
+  int seed = 1;      //!< noise and jitter seed (same seed, same sequence)
   /** "sweep" (procedural sweep along the structure with hand-held jitter), "loop" (an orbit of
    * +-35 deg about the scene that returns to its start after the last frame: a loop to close; it
    * lasts frames / fps, so 960 frames at 30 Hz orbit in 32 s, and under ~300 frames it is
