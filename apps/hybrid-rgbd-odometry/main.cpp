@@ -3,6 +3,7 @@
 
 #include "rgbd_app/Playback.h"
 #include "rgbd_cli/CommandLine.h"
+#include "rgbd_core/JobPaths.h"
 
 int main(int argc, char** argv) {
   using TCLAP::ValueArg;
@@ -58,6 +59,10 @@ int main(int argc, char** argv) {
     o.slam = slam.getValue();
     o.no_slam = no_slam.getValue();
     o.graph = graph.getValue();
-    hrgbd::runPlayback(o, std::cout);
+    // an output on stdout (-t /dev/stdout): the messages go to stderr, not into it
+    const bool on_stdout =
+        hrgbd::writesStandardOutput({o.trajectory, o.csv, o.graph, o.output_rawlog, o.simplemap,
+                                     o.map_ply, o.map_scene, o.plot});
+    hrgbd::runPlayback(o, on_stdout ? std::cerr : std::cout);
   });
 }

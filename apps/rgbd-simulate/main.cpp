@@ -8,6 +8,7 @@
 #include "rgbd_cli/CommandLine.h"
 #include "rgbd_core/Config.h"
 #include "rgbd_core/JobPaths.h"
+#include "rgbd_io/RawlogSource.h"
 #include "rgbd_io/RawlogWriter.h"
 #include "rgbd_sim/Scene.h"
 #include "rgbd_sim/Simulator.h"
@@ -101,6 +102,7 @@ int main(int argc, char** argv) {
         rawlog.getValue(), tum.getValue(),
         hrgbd::parseEnum<hrgbd::ImageStorage>(images.getValue(), "command line", "images"),
         oni.getValue()};
+    if (!tum.getValue().empty()) hrgbd::sim::checkTumOutputFolder(tum.getValue());
     hrgbd::checkJobPaths(
         {{config.getValue(), "the configuration file (--config)"},
          {hrgbd::sim::isProceduralMotion(p.motion) ? "" : p.motion,
@@ -112,7 +114,13 @@ int main(int argc, char** argv) {
     hrgbd::Progress progress(std::cerr, pp);
     const auto r = hrgbd::sim::simulate(p, outputs, quiet.getValue() ? nullptr : &progress);
     if (!quiet.getValue()) progress.finish();
-    std::cout << summary(p, r);
+    // a rawlog or recording on stdout: the summary goes to stderr, not into it
+    const bool on_stdout = hrgbd::writesStandardOutput({rawlog.getValue(), oni.getValue()});
+    (on_stdout ? std::cerr : std::cout) << summary(p, r);
+    for (const auto& o : {rawlog.getValue(), oni.getValue()})
+      if (!o.empty() && hrgbd::groundTruthOutputFor(o).empty())
+        std::cerr << "rgbd-simulate: note: the ground truth is not written: '" << o
+                  << "' is not a regular file, so no <name>_groundtruth.txt goes beside it\n";
     std::cerr << sparseDepthWarning(p, r);
   });
 }

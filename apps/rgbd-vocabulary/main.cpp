@@ -10,6 +10,7 @@
 
 #include "rgbd_cli/CommandLine.h"
 #include "rgbd_core/Config.h"
+#include "rgbd_core/Interrupt.h"
 #include "rgbd_core/JobPaths.h"
 #include "rgbd_core/OutputFile.h"
 #include "rgbd_core/Progress.h"
@@ -50,17 +51,20 @@ int main(int argc, char** argv) {
     // the output is made now (a folder that cannot take it fails before the work) and moved into
     // place only when complete
     hrgbd::OutputFile file(out.getValue(), "vocabulary");
+    // the vocabulary on stdout: the messages go to stderr, not into it
+    std::ostream& log = hrgbd::writesStandardOutput({out.getValue()}) ? std::cerr : std::cout;
     cv::Mat descriptors;
     std::vector<int> image;
     int images = 0;
     for (auto& src : sources) {
-      std::cout << src->describe() << "\n";
+      log << src->describe() << "\n";
       hrgbd::ProgressParams pp;
       pp.total = src->frameCount();
       pp.terminal = isatty(STDERR_FILENO);
       hrgbd::Progress progress(std::cerr, pp);
       std::size_t n = 0;
       while (auto obs = src->next()) {
+        hrgbd::checkInterrupt();
         if (n++ % static_cast<std::size_t>(every.getValue()) == 0) {
           const auto f = hrgbd::extractOrbFeatures(hrgbd::prepareRgbdImage(*obs), orb);
           descriptors.push_back(f.descriptors);
@@ -70,7 +74,7 @@ int main(int argc, char** argv) {
       }
       if (!quiet.getValue()) progress.finish();
     }
-    std::cout << descriptors.rows << " ORB descriptors from " << images << " frames\n";
+    log << descriptors.rows << " ORB descriptors from " << images << " frames\n";
     if (descriptors.rows < words.getValue())
       throw std::runtime_error("too few descriptors for " + std::to_string(words.getValue()) +
                                " words: give more frames (--every, inputs) or fewer --words");
@@ -78,6 +82,6 @@ int main(int argc, char** argv) {
     t.words = words.getValue();
     hrgbd::Vocabulary::train(descriptors, image, t).save(file.writePath());
     file.commit();
-    std::cout << "wrote " << t.words << " words to " << out.getValue() << "\n";
+    log << "wrote " << t.words << " words to " << out.getValue() << "\n";
   });
 }

@@ -7,6 +7,7 @@
 
 #include "rgbd_cli/CommandLine.h"
 #include "rgbd_core/Config.h"
+#include "rgbd_core/Interrupt.h"
 #include "rgbd_core/JobPaths.h"
 #include "rgbd_core/Progress.h"
 #include "rgbd_io/RawlogSource.h"
@@ -29,7 +30,10 @@ int main(int argc, char** argv) {
     hrgbd::TumSource src(in.getValue(), params);
     const auto storage =
         hrgbd::parseEnum<hrgbd::ImageStorage>(images.getValue(), "command line", "images");
-    const auto gt = hrgbd::groundTruthPathFor(out.getValue());
+    // A device or FIFO (/dev/stdout) has no folder to put the ground truth in.
+    const auto gt = hrgbd::groundTruthOutputFor(out.getValue());
+    // the rawlog on stdout: the messages go to stderr, not into it
+    std::ostream& log = hrgbd::writesStandardOutput({out.getValue()}) ? std::cerr : std::cout;
     // Nothing is written over the folder's lists, images or ground truth, or the INI file.
     auto inputs = src.inputs();
     inputs.push_back({cfg.getValue(), "the configuration file (--config)"});
@@ -39,7 +43,7 @@ int main(int argc, char** argv) {
       outputs.push_back(
           {hrgbd::imagesFolderFor(out.getValue()), "the output rawlog's image folder", true, true});
     hrgbd::checkJobPaths(inputs, outputs);
-    std::cout << src.describe() << "\n";
+    log << src.describe() << "\n";
     hrgbd::RawlogWriter writer(out.getValue(), storage);
     hrgbd::ProgressParams pp;
     pp.total = src.size();
@@ -47,15 +51,20 @@ int main(int argc, char** argv) {
     hrgbd::Progress progress(std::cerr, pp);
     std::size_t done = 0;
     while (auto obs = src.next()) {
+      hrgbd::checkInterrupt();
       writer.write(*obs);
       if (!quiet.getValue()) progress.update(++done);
     }
     writer.close();
     if (!quiet.getValue()) progress.finish();
-    std::cout << "wrote " << writer.written() << " frames to " << out.getValue() << "\n";
-    if (!src.groundTruth().empty()) {
+    log << "wrote " << writer.written() << " frames to " << out.getValue() << "\n";
+    if (!src.groundTruth().empty() && gt.empty())
+      std::cerr << "tum2rawlog: note: the " << src.groundTruth().size()
+                << " ground-truth poses are not written: '" << out.getValue()
+                << "' is not a regular file, so no <name>_groundtruth.txt goes beside it\n";
+    if (!src.groundTruth().empty() && !gt.empty()) {
       hrgbd::saveTumTrajectory(gt, src.groundTruth());
-      std::cout << "wrote " << src.groundTruth().size() << " ground-truth poses to " << gt << "\n";
+      log << "wrote " << src.groundTruth().size() << " ground-truth poses to " << gt << "\n";
     }
   });
 }

@@ -1,9 +1,12 @@
 #include "rgbd_core/Config.h"
 
 #include <mrpt/config/CConfigFileMemory.h>
+#include <sys/stat.h>
 
+#include <filesystem>
 #include <fstream>
 #include <stdexcept>
+#include <thread>
 
 #include "TestData.h"
 #include "rgbd_core/Params.h"
@@ -267,4 +270,32 @@ TEST(Config, LinesMrptWouldSkipAreRejectedNamingTheLine) {
   EXPECT_EQ(messageOfFile("@define KV n_levels = 8\n[ORB]\n${KV}\n"), "");
   msg = messageOfFile("[ORB]\nn_features = \\\n  500\nfast_threshold 5\n");
   EXPECT_NE(msg.find("line 4: 'fast_threshold 5'"), std::string::npos) << msg;
+}
+
+TEST(Config, IncludeLinesAreRefusedNamingTheLine) {
+  // MRPT's INI preprocessor knows @define only: "@include" was skipped without a word.
+  const auto msg = messageOfFile("[ORB]\nn_features = 500\n@include other.ini\n");
+  EXPECT_NE(msg.find("line 3: '@include other.ini'"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("no @include"), std::string::npos) << msg;
+  EXPECT_EQ(messageOfFile("@define N 500\n[ORB]\nn_features = ${N}\n"), "");
+}
+
+TEST(Config, AnIniFileFromAPipeIsReadOnceAndADeviceIsRefused) {
+  const auto dir = hrgbd::test::tempDir("config_pipe");
+  const auto fifo = dir + "/c.ini";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  // The writer opens, writes once and closes: a second open (CConfigFile's) waited for ever.
+  std::thread writer([&] { std::ofstream(fifo) << "[ORB]\nn_features = 321\n"; });
+  const auto cfg = hrgbd::loadIniFile(fifo);
+  writer.join();
+  EXPECT_EQ(cfg->read_int("ORB", "n_features", 0), 321);
+  if (!std::filesystem::exists("/dev/zero")) GTEST_SKIP() << "no /dev/zero on this system";
+  try {
+    hrgbd::loadIniFile("/dev/zero");  // was read until memory ran out: std::bad_alloc
+    FAIL() << "/dev/zero read as an INI file";
+  } catch (const ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("config file '/dev/zero' is a character device"),
+              std::string::npos)
+        << e.what();
+  }
 }

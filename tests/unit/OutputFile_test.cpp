@@ -120,3 +120,14 @@ TEST(GzOutput, CompressedArchivesAreCheckedAndAppearOnlyWhenClosed) {
   EXPECT_NE(full.find("cannot write simplemap '/dev/full'"), std::string::npos) << full;
   EXPECT_EQ(full.find("MRPT exception"), std::string::npos) << full;
 }
+
+TEST(OutputFile, ANameNearTheFileSystemsLimitGetsATemporaryNameThatFits) {
+  // ".<name>.<pid>-<n>.tmp" of a 254-byte name is over 255 bytes: the output was refused.
+  const auto dir = hrgbd::test::tempDir("output_long_name");
+  const auto path = dir + "/" + std::string(250, 'a') + ".txt";
+  hrgbd::StreamOutput out(path, "test output");
+  out.stream() << "data\n";
+  out.commit();
+  EXPECT_EQ(slurp(path), "data\n");
+  EXPECT_EQ(entries(dir), 1u);
+}

@@ -119,3 +119,20 @@ TEST(Trajectory, AByteOrderMarkAtTheStartIsSkippedAndAFolderIsNamed) {
     EXPECT_NE(std::string(e.what()).find("is a folder"), std::string::npos) << e.what();
   }
 }
+
+TEST(Trajectory, AKittiPoseFileIsNamedAsSuch) {
+  // 12 numbers a line (a 3x4 matrix): its first 8 were read as 't tx ty tz qx qy qz qw', and
+  // rgbd-eval said "duplicate time stamps".
+  const auto dir = hrgbd::test::tempDir("traj_kitti");
+  std::ofstream(dir + "/k.txt") << "1 0 0 0 0 1 0 0 0 0 1 0\n1 0 0 0.5 0 1 0 0 0 0 1 0.1\n";
+  try {
+    hrgbd::loadTumTrajectory(dir + "/k.txt", true);
+    FAIL() << "a KITTI file read as TUM";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("k.txt' line 1: 12 columns: KITTI format"),
+              std::string::npos)
+        << e.what();
+  }
+  std::ofstream(dir + "/n.txt") << "1 0 0 0 0 0 0 1 7\n";
+  EXPECT_THROW(hrgbd::loadTumTrajectory(dir + "/n.txt"), std::runtime_error);  // 9 columns
+}

@@ -3,6 +3,8 @@
 #include <ostream>
 #include <stdexcept>
 
+#include "rgbd_core/Interrupt.h"
+
 namespace hrgbd {
 
 FrameLoop::FrameLoop(FrameSource& source, std::unique_ptr<RgbdOdometry> odometry,
@@ -20,6 +22,7 @@ void FrameLoop::setSlam(std::unique_ptr<KeyframeSlam> slam, bool live_correction
 }
 
 bool FrameLoop::step() {
+  checkInterrupt();  // Ctrl-C, SIGTERM: the run ends here, its outputs not written
   if (m_max_frames > 0 && m_frames >= m_max_frames) return false;
   const auto obs = m_source.next();
   if (!obs) return false;
@@ -41,6 +44,7 @@ std::size_t FrameLoop::run() {
 }
 
 void FrameLoop::finish(std::ostream& log) {
+  checkInterrupt();
   if (m_slam) {
     m_slam->flush();
     const auto poses = m_slam->poses();

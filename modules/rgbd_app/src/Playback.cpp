@@ -139,8 +139,10 @@ PlaybackSinks makeSinks(const PlaybackJob& job, const FrameSource& source,
   if (progress) s.progress = std::make_unique<ProgressSink>(std::cerr, *progress);
   s.summary = std::make_unique<SummarySink>(source);
   s.trajectory = std::make_unique<TrajectorySink>(
-      job.trajectory, std::string("# hybrid-rgbd-odometry ") + toString(job.odometry.method) +
-                          ": timestamp tx ty tz qx qy qz qw (optical frame of the first camera)");
+      job.trajectory,
+      std::string("# hybrid-rgbd-odometry ") + toString(job.odometry.method) +
+          ": timestamp tx ty tz qx qy qz qw (optical frame of the first camera)",
+      !job.slam.enabled);  // the SLAM mode's poses are written once, optimised
   if (!job.csv.empty()) s.csv = std::make_unique<CsvSink>(job.csv);
   MapParams map_params;
   map_params.loadFromConfigFile(*job.cfg, "Map");

@@ -11,8 +11,8 @@
 
 namespace hrgbd {
 
-TrajectorySink::TrajectorySink(const std::string& path, const std::string& comment)
-    : m_file(std::make_unique<StreamOutput>(path, "trajectory")), m_comment(comment) {
+TrajectorySink::TrajectorySink(const std::string& path, const std::string& comment, bool streamed)
+    : m_file(std::make_unique<StreamOutput>(path, "trajectory")), m_streamed(streamed) {
   m_file->stream() << comment << "\n";
   m_file->flush();
 }
@@ -20,22 +20,19 @@ TrajectorySink::TrajectorySink(const std::string& path, const std::string& comme
 void TrajectorySink::add(const mrpt::obs::CObservation3DRangeScan& obs, const FrameResult& r) {
   m_trajectory.push_back({frameSeconds(obs.timestamp), r.pose});
   m_times.push_back(formatFrameTime(obs.timestamp));
-  if (!m_file) return;
+  if (!m_file || !m_streamed) return;
   writeTumLine(m_file->stream(), m_times.back(), r.pose);
   m_file->flush();
 }
 
 void TrajectorySink::finish(std::ostream& log) {
   if (!m_file) return;
-  if (m_corrected) {
-    const std::string path = m_file->path();
-    m_file.reset();  // the lines written as the frames came are replaced in full
-    save(path, m_comment);
-    log << "trajectory (SLAM, optimised): " << path << "\n";
-    return;
-  }
+  if (!m_streamed)
+    for (std::size_t i = 0; i < m_trajectory.size(); ++i)
+      writeTumLine(m_file->stream(), m_times[i], m_trajectory[i].pose);
   m_file->commit();
-  log << "trajectory: " << m_file->path() << "\n";
+  log << (m_corrected ? "trajectory (SLAM, optimised): " : "trajectory: ") << m_file->path()
+      << "\n";
   m_file.reset();
 }
 
@@ -49,6 +46,9 @@ void TrajectorySink::correct(const SlamPoses& slam) {
     throw std::logic_error("TrajectorySink: " + std::to_string(slam.poses.size()) +
                            " optimised poses for " + std::to_string(m_trajectory.size()) +
                            " frames");
+  if (m_file && m_streamed)
+    throw std::logic_error("TrajectorySink: optimised poses for '" + m_file->path() +
+                           "', whose poses are written as they come");
   for (std::size_t i = 0; i < m_trajectory.size(); ++i) m_trajectory[i].pose = slam.poses[i];
   m_corrected = true;
 }

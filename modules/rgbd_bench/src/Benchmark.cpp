@@ -16,8 +16,10 @@
 #include "rgbd_app/AppConfig.h"
 #include "rgbd_baselines/ThreadLimit.h"
 #include "rgbd_core/Config.h"
+#include "rgbd_core/Interrupt.h"
 #include "rgbd_core/JobPaths.h"
 #include "rgbd_core/OutputFile.h"
+#include "rgbd_core/TextFile.h"
 #include "rgbd_eval/EvalPlot.h"
 #include "rgbd_io/RawlogSource.h"
 #include "rgbd_sim/Scene.h"
@@ -167,6 +169,8 @@ BenchRun runOne(const BenchSequence& seq, const std::string& method, const std::
   std::ostringstream playback_log;
   try {
     run.summary = runPlayback(opt, playback_log);
+  } catch (const Interrupted&) {
+    throw;  // not this run's error: the benchmark stops
   } catch (const std::exception& e) {
     run.error = e.what();
   }
@@ -206,6 +210,25 @@ std::vector<BenchRun> runAll(const std::vector<BenchSequence>& sequences, const 
     }
   }
   return runs;
+}
+
+/** Throws when no run succeeded: there are no results to write (they were written empty, and
+ * the benchmark exited 0). Names why: no sequence, every sequence skipped, every run failed. */
+void requireAResult(const std::vector<BenchSequence>& sequences,
+                    const std::vector<BenchRun>& runs) {
+  for (const auto& run : runs)
+    if (run.error.empty()) return;
+  std::string why;
+  if (sequences.empty())
+    why = "no sequence: [Benchmark] sim_scenes and real_sequences are empty and none was given";
+  else if (runs.empty())
+    for (const auto& seq : sequences)
+      why += (why.empty() ? "every sequence was skipped: " : "; ") + seq.name + " (" +
+             (seq.skip_reason.empty() ? "no method" : seq.skip_reason) + ")";
+  else
+    why = "every run failed; the first, " + runs[0].sequence + " " + runs[0].method + ": " +
+          runs[0].error;
+  throw std::runtime_error("no benchmark result: " + why + "; no results written");
 }
 
 /** <output_folder>/<name>. */
@@ -271,6 +294,9 @@ BenchmarkReport runBenchmark(const std::string& config_file, const std::vector<s
                              std::ostream& log, bool progress,
                              const std::map<std::string, std::string>& overrides) {
   const auto start = std::chrono::steady_clock::now();
+  // every run reads the file again (runPlayback()): a pipe would give the first run alone
+  if (!config_file.empty())
+    requireRegularFile(config_file, "config file", "the benchmark reads it once per run");
   const auto p = loadBenchmarkParams(config_file, overrides);
   checkResultPaths(p, config_file, extra);
   BenchmarkReport report;
@@ -280,6 +306,7 @@ BenchmarkReport runBenchmark(const std::string& config_file, const std::vector<s
   report.date = today();
   report.sequences = prepareSequences(p, extra, log);
   report.runs = runAll(report.sequences, p, config_file, log, progress);
+  requireAResult(report.sequences, report.runs);
   report.figures = plotRealSequences(report, p, log);
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 

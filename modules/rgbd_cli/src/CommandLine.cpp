@@ -7,6 +7,8 @@
 #include <sstream>
 #include <type_traits>
 
+#include "rgbd_core/Interrupt.h"
+
 namespace hrgbd {
 
 /** TCLAP's printer, remembering what parse() did: TCLAP prints the help or an error and returns
@@ -148,9 +150,17 @@ int CommandLine::run(int argc, const char* const* argv, const std::function<void
     if (m_output->printed && m_output->error.empty()) return kExitSuccess;
     return refuse(m_output->error.empty() ? "invalid command line" : m_output->error);
   }
+  installInterruptHandlers();  // Ctrl-C: the outputs not complete are removed, then 130
   try {
     work();
     return kExitSuccess;
+  } catch (const Interrupted& e) {
+    m_err << "\n" << m_app << ": " << e.what() << ": stopped";
+    const auto lost = notWritten();
+    if (lost.empty()) m_err << "; every output not complete was left unwritten\n";
+    for (std::size_t k = 0; k < lost.size(); ++k)
+      m_err << (k == 0 ? "; not written: " : ", ") << lost[k] << (k + 1 == lost.size() ? "\n" : "");
+    return e.exitCode();
   } catch (const UsageError& e) {
     return refuse(e.what());
   } catch (const std::exception& e) {

@@ -1,6 +1,7 @@
 #include "rgbd_core/Config.h"
 
-#include <mrpt/config/CConfigFile.h>
+#include <mrpt/config/CConfigFileMemory.h>
+#include <mrpt/config/config_parser.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -63,9 +64,18 @@ void rejectMalformedLines(const std::string& text, const std::string& name) {
     const auto first = line.find_first_not_of(" \t\r");
     if (first == std::string::npos) continue;
     line = line.substr(first, line.find_last_not_of(" \t\r") + 1 - first);
-    if (line[0] == ';' || line[0] == '#' || line.rfind("//", 0) == 0 || line[0] == '@') continue;
-    if (line.find("${") != std::string::npos) continue;  // an @define'd variable: seen expanded
+    if (line[0] == ';' || line[0] == '#' || line.rfind("//", 0) == 0) continue;
     const auto where = "config file '" + name + "' line " + std::to_string(line_no) + ": ";
+    if (line[0] == '@') {
+      // MRPT's preprocessor knows "@define NAME VALUE" only; it leaves any other '@' line (an
+      // "@include other.ini") to the INI parser, which skips it without a word.
+      if (line.rfind("@define", 0) == 0 && line.find_first_of(" \t") == 7) continue;
+      const auto directive = line.substr(0, line.find_first_of(" \t"));
+      throw ConfigError(where + "'" + line + "': MRPT's INI files have no " + directive +
+                        " (only @define), so it would be ignored; copy the keys it should " +
+                        "bring into this file");
+    }
+    if (line.find("${") != std::string::npos) continue;  // an @define'd variable: seen expanded
     if (line[0] == '[' && line.find(']') == std::string::npos)
       throw ConfigError(where + "'" + line + "' opens a section without closing it with ']'");
     if (line[0] == '[') {
@@ -94,14 +104,16 @@ void rejectMalformedLines(const std::string& text, const std::string& name) {
 std::unique_ptr<mrpt::config::CConfigFileBase> loadIniFile(const std::string& path) {
   std::string text;
   try {
-    text = readTextFile(path, "config file");
+    text = readTextFile(path, "config file");  // read once: a FIFO or `-c <(...)` too
   } catch (const std::runtime_error& e) {
     throw ConfigError(e.what());
   }
   rejectMalformedLines(text, path);
   try {
-    return std::make_unique<mrpt::config::CConfigFile>(path);
-  } catch (const std::exception& e) {  // MRPT's preprocessor: $env{}, $eval{}, @include, ...
+    // What CConfigFile(path) does, on the text already read (it opened the file again, and
+    // sized its buffer by seeking to the end, which a pipe cannot: "basic_string::_M_create").
+    return std::make_unique<mrpt::config::CConfigFileMemory>(mrpt::config::config_parser(text));
+  } catch (const std::exception& e) {  // MRPT's preprocessor: $env{}, $eval{}, ...
     throw ConfigError("config file '" + path + "': " + errorText(e));
   }
 }

@@ -1,5 +1,8 @@
 #include "rgbd_core/JobPaths.h"
 
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <filesystem>
 
 #include "rgbd_core/Config.h"
@@ -73,6 +76,18 @@ void checkJobPaths(const std::vector<JobPath>& inputs, const std::vector<JobPath
                  quoted(other) + " and " + quoted(out) + " are the same file");
     }
   }
+}
+
+bool writesStandardOutput(const std::vector<std::string>& paths) {
+  struct stat out {};
+  if (::fstat(STDOUT_FILENO, &out) != 0) return false;
+  for (const auto& p : paths) {
+    struct stat s {};
+    if (!p.empty() && ::stat(p.c_str(), &s) == 0 && s.st_dev == out.st_dev &&
+        s.st_ino == out.st_ino)
+      return true;
+  }
+  return false;
 }
 
 }  // namespace hrgbd

@@ -9,18 +9,25 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "rgbd_core/Interrupt.h"
+
 namespace hrgbd {
 namespace fs = std::filesystem;
 
 namespace {
+
+constexpr std::size_t kMaxName = 255;  // NAME_MAX of Linux file systems
 
 /** Creates a new, empty file beside `target` whose name no other writer uses; returns its path.
  * `error` is set (and "" returned) if the folder does not take it. */
 std::string createTemporary(const fs::path& target, std::string& error) {
   static std::atomic<unsigned> counter{0};
   for (int attempt = 0; attempt < 100; ++attempt) {
-    const auto name = "." + target.filename().string() + "." + std::to_string(::getpid()) + "-" +
-                      std::to_string(counter++) + ".tmp";
+    const auto suffix = "." + std::to_string(::getpid()) + "-" + std::to_string(counter++) + ".tmp";
+    // A name near the file system's limit (255 bytes) must leave room for the suffix: the
+    // temporary name keeps as much of it as fits.
+    const auto stem = target.filename().string().substr(0, kMaxName - 1 - suffix.size());
+    const auto name = "." + stem + suffix;
     const auto tmp = (target.parent_path() / name).string();
     const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
     if (fd >= 0) {
@@ -55,12 +62,16 @@ OutputFile::OutputFile(const std::string& path, const std::string& what)
   std::string error;
   m_write_path = createTemporary(target, error);
   if (m_write_path.empty()) fail(error);
+  m_slot = registerTemporary(m_write_path);
 }
 
 OutputFile::~OutputFile() {
-  if (m_done || m_direct || m_write_path.empty()) return;
+  if (m_done || m_write_path.empty()) return;
+  if (interrupted()) noteNotWritten(m_what + " '" + m_path + "'" + (m_direct ? " (in part)" : ""));
+  if (m_direct) return;
   std::error_code ec;
   fs::remove(m_write_path, ec);
+  unregisterTemporary(m_slot);
 }
 
 void OutputFile::commit() {
@@ -71,6 +82,7 @@ void OutputFile::commit() {
     if (fs::is_regular_file(old)) fs::permissions(m_write_path, old.permissions(), ec);
     fs::rename(m_write_path, m_target, ec);
     if (ec) fail(ec.message());
+    unregisterTemporary(m_slot);
   }
   m_done = true;
 }

@@ -30,6 +30,16 @@ Trajectory loadTumTrajectory(const std::string& path, bool unique_times) {
     const auto where = "'" + path + "' line " + std::to_string(line_no);
     if (ss.fail())
       throw std::runtime_error(where + ": expected 8 numbers 't tx ty tz qx qy qz qw'");
+    if (!(ss >> std::ws).eof()) {
+      // More columns: another format, whose first 8 numbers would be read as wrong poses.
+      std::istringstream all(line);
+      std::size_t n = 0;
+      for (std::string word; all >> word;) ++n;
+      throw std::runtime_error(
+          where + ": " + std::to_string(n) + " columns" +
+          (n == 12 ? ": KITTI format (a 3x4 matrix per line, no time stamp), not TUM" : "") +
+          "; a TUM trajectory has 8 numbers a line 't tx ty tz qx qy qz qw'");
+    }
     for (double x : v)
       if (!std::isfinite(x)) throw std::runtime_error(where + ": non-finite value");
     // Norm scaled by the largest component: squares of 1e200 overflow (found by fuzz_tum_list).

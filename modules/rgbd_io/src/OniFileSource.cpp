@@ -17,6 +17,7 @@
 #include <thread>
 
 #include "rgbd_core/RgbdFrame.h"
+#include "rgbd_core/TextFile.h"
 #include "rgbd_core/Timestamp.h"
 #include "rgbd_io/RawlogSource.h"
 
@@ -168,6 +169,7 @@ struct OniFileSource::Impl {
 OniFileSource::OniFileSource(const std::string& path) : m(std::make_unique<Impl>()) {
   m->path = path;
   // OpenNI2 says only "Couldn't open device" for a missing file or another format: check first.
+  requireRegularFile(path, "OpenNI recording");  // OpenNI2 seeks in it
   std::ifstream probe(path, std::ios::binary);
   if (!probe) throw fail(path, "cannot open the file (missing or unreadable)");
   char magic[4] = {};

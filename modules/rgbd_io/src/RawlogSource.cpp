@@ -11,6 +11,7 @@
 #include "ImageFiles.h"
 #include "ReadGuards.h"
 #include "rgbd_core/ErrorText.h"
+#include "rgbd_core/TextFile.h"
 #include "rgbd_core/Timestamp.h"
 
 namespace hrgbd {
@@ -39,10 +40,22 @@ std::string groundTruthPathFor(const std::string& rawlog_path) {
   return std::filesystem::path(rawlog_path).replace_extension().string() + "_groundtruth.txt";
 }
 
+std::string groundTruthOutputFor(const std::string& output) {
+  // /dev/stdout redirected to a file resolves to that file: the name decides too
+  const auto name = std::filesystem::absolute(output).lexically_normal().string();
+  if (name.rfind("/dev/", 0) == 0 || name.rfind("/proc/", 0) == 0) return "";
+  const auto kind = specialFileKind(output);
+  return kind.empty() || kind == "a folder" ? groundTruthPathFor(output) : "";
+}
+
 RawlogSource::RawlogSource(const std::string& path) : m_path(path) {
   installReadGuards();
   if (!mrpt::system::fileExists(path))
     throw std::runtime_error("rawlog '" + path + "' does not exist");
+  // A FIFO would be read up to its end by the frame count before the run, and /dev/zero without
+  // end; MRPT's own message for either names no file.
+  requireRegularFile(path, "rawlog",
+                     "a rawlog is read twice (its frames counted, then played): give a file");
   if (!m_file.open(path)) throw std::runtime_error("cannot open rawlog '" + path + "'");
   m_archive =
       std::make_unique<mrpt::serialization::CArchiveStreamBase<mrpt::io::CFileGZInputStream>>(
@@ -138,6 +151,7 @@ mrpt::obs::CObservation3DRangeScan::Ptr RawlogSource::next() {
                                obs->intensityImage.getExternalStorageFile() + "')");
     if (!mrpt::system::fileExists(file))
       throw std::runtime_error(where() + "external image '" + file + "' is missing");
+    requireRegularFile(file, where() + "external image");  // a folder, a FIFO, /dev/zero
     try {
       refuseTruncatedJpeg(file, "external");
     } catch (const std::runtime_error& e) {

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "rgbd_core/ErrorText.h"
+#include "rgbd_core/Interrupt.h"
 
 namespace hrgbd {
 
@@ -34,18 +35,27 @@ RawlogWriter::RawlogWriter(const std::string& path, ImageStorage images, int com
   if (images != ImageStorage::Inline) {
     // MRPT's convention, found by CRawlog::detectImagesDirectory(): "<stem>_Images/".
     m_images_dir = imagesFolderFor(path);
+    m_made_folder = !std::filesystem::exists(m_images_dir, ec);
     std::filesystem::create_directories(m_images_dir, ec);
     if (ec || !std::filesystem::is_directory(m_images_dir))
       throw std::runtime_error("cannot create image folder '" + m_images_dir + "'");
   }
 }
 
-RawlogWriter::~RawlogWriter() = default;
+RawlogWriter::~RawlogWriter() {
+  if (m_closed || m_images_dir.empty()) return;  // complete, or no external images
+  std::error_code ec;
+  for (const auto& f : m_image_files) std::filesystem::remove(f, ec);
+  if (m_made_folder) std::filesystem::remove(m_images_dir, ec);  // only when empty
+  if (interrupted() && !m_image_files.empty())
+    noteNotWritten("the rawlog's images in '" + m_images_dir + "' (removed)");
+}
 
 void RawlogWriter::close() {
   if (!m_archive) throw std::logic_error("RawlogWriter: close() twice for '" + m_path + "'");
   m_archive.reset();
-  m_file->close();
+  m_file->close();  // the images stay only when this completes the rawlog
+  m_closed = true;
 }
 
 void RawlogWriter::append(const mrpt::serialization::CSerializable& obj) {
@@ -73,7 +83,10 @@ void RawlogWriter::write(const mrpt::serialization::CSerializable& obj) {
                       {cv::IMWRITE_JPEG_QUALITY, 90}))
       throw std::runtime_error("cannot encode the image of frame " + std::to_string(m_count) +
                                " for '" + m_path + "'");
-    writeOutputFile(m_images_dir + "/" + name, "image", bytes.data(), bytes.size());
+    const auto file = m_images_dir + "/" + name;
+    std::error_code ec;
+    if (!std::filesystem::exists(file, ec)) m_image_files.push_back(file);  // an older run's stay
+    writeOutputFile(file, "image", bytes.data(), bytes.size());
     copy.intensityImage.setExternalStorage(name);
     append(copy);
   }

@@ -29,6 +29,7 @@ std::string sizeText(cv::Size s) {
 }
 
 cv::Mat readImage(const std::string& path, const char* what, int flags) {
+  requireRegularFile(path, std::string(what) + " image");  // a folder, /dev/zero, a FIFO
   refuseHugePng(path);
   refuseTruncatedJpeg(path, what);
   cv::Mat m;
@@ -147,9 +148,20 @@ TumSource::TumSource(const std::string& folder, const TumSourceParams& params)
     if (name.rfind("associat", 0) == 0 && f.path().extension() == ".txt")
       m_inputs.push_back({f.path().string(), "the TUM folder's " + name});
   }
+  // The folders holding the images (rgb/, depth/) are inputs as folders: nothing may be written
+  // inside them either (a new file there is no listed image, but it is the dataset's folder).
+  std::set<std::string> image_folders;
   for (const auto* list : {&rgb, &depth})
-    for (const auto& e : *list)
+    for (const auto& e : *list) {
       m_inputs.push_back({imagePath(e.file), "the TUM folder's image " + e.file});
+      const auto parent = std::filesystem::path(imagePath(e.file)).parent_path();
+      if (!std::filesystem::equivalent(parent, folder, ec) &&
+          image_folders.insert(parent.string()).second)
+        m_inputs.push_back(
+            {parent.string(),
+             "the TUM folder's image folder '" + parent.lexically_relative(folder).string() + "'",
+             true});
+    }
 }
 
 mrpt::obs::CObservation3DRangeScan::Ptr TumSource::next() {

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "rgbd_core/Config.h"
+#include "rgbd_core/Interrupt.h"
 #include "rgbd_core/Intrinsics.h"
 #include "rgbd_core/Median.h"
 #include "rgbd_core/OutputFile.h"
@@ -218,6 +219,21 @@ class SequenceWriter {
     }
   }
 
+  /** Without finish() (an error, Ctrl-C): the TUM folder's images written are removed again, with
+   * the folders made for them; the lists, rawlog and recording were never moved into place. */
+  ~SequenceWriter() {
+    if (m_finished) return;
+    m_oni.reset(), m_rgb_txt.reset(), m_depth_txt.reset(), m_rawlog.reset();  // their temporaries
+    std::error_code ec;
+    for (const auto& f : m_images) std::filesystem::remove(f, ec);
+    for (auto d = m_made_folders.rbegin(); d != m_made_folders.rend(); ++d)
+      std::filesystem::remove(*d, ec);  // only when empty
+    if (interrupted() && !m_images.empty())
+      noteNotWritten("the TUM folder's images in '" + m_outputs.tum_folder + "' (removed)");
+  }
+  SequenceWriter(const SequenceWriter&) = delete;
+  SequenceWriter& operator=(const SequenceWriter&) = delete;
+
   /** Frame at time stamp t [s]. */
   void write(double t, const SensorFrame& frame) {
     if (m_oni) {
@@ -248,11 +264,13 @@ class SequenceWriter {
       m_oni->close();
       Trajectory in_recording_clock = ground_truth;
       for (auto& p : in_recording_clock) p.t = std::round((p.t - kStart) * 1e6) * 1e-6;  // [us]
-      saveTumTrajectory(groundTruthPathFor(m_outputs.oni), in_recording_clock);
+      if (const auto gt = groundTruthOutputFor(m_outputs.oni); !gt.empty())
+        saveTumTrajectory(gt, in_recording_clock);
     }
     if (m_rawlog) {
       m_rawlog->close();
-      saveTumTrajectory(groundTruthPathFor(m_outputs.rawlog), ground_truth);
+      if (const auto gt = groundTruthOutputFor(m_outputs.rawlog); !gt.empty())
+        saveTumTrajectory(gt, ground_truth);
     }
     if (m_rgb_txt) {
       m_rgb_txt->commit();
@@ -265,12 +283,15 @@ class SequenceWriter {
                            << m_camera.cx() << ' ' << m_camera.cy() << '\n';
       calibration.commit();
     }
+    m_finished = true;
   }
 
  private:
   void openTumFolder(const std::string& scene_name) {
     const std::string& dir = m_outputs.tum_folder;
     std::error_code ec;
+    for (const auto& made : {dir, dir + "/rgb", dir + "/depth"})
+      if (!std::filesystem::exists(made, ec)) m_made_folders.push_back(made);
     for (const auto* sub : {"/rgb", "/depth"})
       if (!std::filesystem::create_directories(dir + sub, ec) && ec)
         throw std::runtime_error("cannot create folder '" + dir + sub + "': " + ec.message());
@@ -284,10 +305,12 @@ class SequenceWriter {
 
   /** PNG through cv::imencode and a checked OutputFile (cv::imwrite does not report a full disk).
    */
-  static void writePng(const std::string& path, const cv::Mat& image) {
+  void writePng(const std::string& path, const cv::Mat& image) {
     std::vector<uchar> bytes;
     if (!cv::imencode(".png", image, bytes))
       throw std::runtime_error("cannot encode image '" + path + "'");
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec)) m_images.push_back(path);  // a rerun's stay
     writeOutputFile(path, "image", bytes.data(), bytes.size());
   }
 
@@ -297,6 +320,8 @@ class SequenceWriter {
   std::unique_ptr<StreamOutput> m_rgb_txt, m_depth_txt;
   std::unique_ptr<OniWriter> m_oni;
   int m_oni_frames = 0;
+  bool m_finished = false;
+  std::vector<std::string> m_images, m_made_folders;  //!< removed again without finish()
 };
 
 }  // namespace
@@ -305,13 +330,13 @@ std::vector<JobPath> writtenFiles(const SimOutputs& outputs) {
   std::vector<JobPath> out;
   if (!outputs.rawlog.empty()) {
     out.push_back({outputs.rawlog, "--rawlog", false, true});
-    out.push_back({groundTruthPathFor(outputs.rawlog), "--rawlog's ground truth", false, true});
+    out.push_back({groundTruthOutputFor(outputs.rawlog), "--rawlog's ground truth", false, true});
     if (outputs.images != ImageStorage::Inline)
       out.push_back({imagesFolderFor(outputs.rawlog), "--rawlog's image folder", true, true});
   }
   if (!outputs.oni.empty()) {
     out.push_back({outputs.oni, "--oni", false, true});
-    out.push_back({groundTruthPathFor(outputs.oni), "--oni's ground truth", false, true});
+    out.push_back({groundTruthOutputFor(outputs.oni), "--oni's ground truth", false, true});
   }
   if (!outputs.tum_folder.empty()) {
     for (const auto* name : {"rgb.txt", "depth.txt", "groundtruth.txt", "calibration.txt"})
@@ -332,6 +357,7 @@ SimResult simulate(const SimParams& p, const SimOutputs& outputs, Progress* prog
   SimResult res;
   std::vector<double> ms;
   for (int i = 0; i < p.frames; ++i) {
+    checkInterrupt();  // Ctrl-C: the outputs are not completed (their destructors clean up)
     const auto t0 = std::chrono::steady_clock::now();
     const SensorFrame frame =
         p.walker_speed > 0

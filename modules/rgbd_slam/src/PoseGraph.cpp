@@ -127,13 +127,11 @@ PoseGraphOptimization PoseGraph::optimize(double max_chi2, int max_iterations,
 }
 
 void PoseGraph::save(const std::string& path) const {
-  OutputFile file(path, "pose graph");
-  try {
-    toMrpt().saveToTextFile(file.writePath());
-  } catch (const std::exception& e) {
-    file.fail(e.what());
-  }
-  file.commit();
+  // MRPT's saveToTextFile() checks none of its writes (--graph /dev/full exited 0): the same
+  // text through a checked stream
+  StreamOutput out(path, "pose graph");
+  toMrpt().writeAsText(out.stream());
+  out.commit();
 }
 
 }  // namespace hrgbd

@@ -11,6 +11,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "rgbd_core/TextFile.h"
+
 namespace hrgbd {
 namespace {
 
@@ -173,16 +175,17 @@ void Vocabulary::save(const std::string& path) const {
     s << std::dec << " " << std::setprecision(9) << m_idf[k] << "\n";
   }
   std::ofstream out(path, std::ios::binary);
-  if (!(out << s.str()) || !out.flush())
-    throw std::runtime_error("cannot write the vocabulary " + path);
+  out << s.str();
+  out.close();  // checked too: the last buffer is written there
+  if (!out) throw std::runtime_error("cannot write the vocabulary " + path);
 }
 
 Vocabulary Vocabulary::load(const std::string& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
     throw std::runtime_error(path + " is a folder, not a vocabulary file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot open the vocabulary " + path);
+  // read once, capped (a device such as /dev/zero is refused, a pipe read up to 64 MiB)
+  std::istringstream in(readTextFile(path, "vocabulary"));
   auto fail = [&](std::size_t line, const std::string& why) -> std::runtime_error {
     return std::runtime_error("vocabulary " + path + ", line " + std::to_string(line) + ": " + why);
   };

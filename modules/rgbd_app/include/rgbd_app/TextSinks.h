@@ -25,16 +25,20 @@ class TrajectorySink : public FrameSink {
   /** Memory only (trajectory(), save()). */
   TrajectorySink() = default;
   /** Also writes `path`, starting with `comment` (a line starting with '#'); throws
-   * std::runtime_error if the file cannot be written. */
-  TrajectorySink(const std::string& path, const std::string& comment);
+   * std::runtime_error if the file cannot be written. With `streamed`, each pose is written as
+   * its frame comes (a FIFO or /dev/stdout follows the run); without it (the SLAM mode, whose
+   * poses correct() replaces), finish() writes every pose once: an output that is a device or
+   * FIFO cannot be rewritten, and got the odometry's poses and then the optimised ones. */
+  TrajectorySink(const std::string& path, const std::string& comment, bool streamed = true);
   /** Throws std::runtime_error naming the file when the line cannot be written. */
   void add(const mrpt::obs::CObservation3DRangeScan& obs, const FrameResult& r) override;
-  /** Moves the file into place (throws naming it if a write failed) and logs
-   * "trajectory: <path>". */
+  /** Writes the poses not yet written, moves the file into place (throws naming it if a write
+   * failed) and logs "trajectory: <path>". */
   void finish(std::ostream& log) override;
   /** Drops the poses kept in memory; lines already written stay in the file. */
   void reset() override;
-  /** Takes the optimised poses; finish() then writes the file anew with them. */
+  /** Takes the optimised poses, which finish() writes; throws std::logic_error on a streamed
+   * sink whose lines are already written. */
   void correct(const SlamPoses& slam) override;
   /** Poses (optical frame of the first camera) since the start or the last reset. */
   const Trajectory& trajectory() const { return m_trajectory; }
@@ -44,7 +48,7 @@ class TrajectorySink : public FrameSink {
 
  private:
   std::unique_ptr<StreamOutput> m_file;
-  std::string m_comment;  //!< the first line, kept to write the file anew after correct()
+  bool m_streamed = true;
   bool m_corrected = false;
   Trajectory m_trajectory;
   std::vector<std::string> m_times;  //!< formatFrameTime() of each pose in m_trajectory

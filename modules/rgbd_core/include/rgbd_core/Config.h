@@ -70,11 +70,14 @@ E parseEnum(const std::string& name, const std::string& section, const std::stri
 /** Throws ConfigError naming the file (`name`), line and section or key when INI `text` gives a
  * section twice or a key twice in one section (MRPT would merge or pick one silently), or has a
  * line MRPT would skip silently: a key before any section, an unclosed '[', a line that is
- * neither a [section] nor key = value. */
+ * neither a [section] nor key = value, a preprocessor line other than "@define" ("@include",
+ * which MRPT does not support). */
 void rejectMalformedLines(const std::string& text, const std::string& name);
 
-/** Loads an INI file, throwing ConfigError if it is missing, a folder or unreadable, or if it
- * repeats a section or key or has a malformed line (rejectMalformedLines()). */
+/** Loads an INI file, read once (readTextFile(): a pipe or FIFO too, a device refused), throwing
+ * ConfigError if it is missing, a folder or unreadable, or if it repeats a section or key or has a
+ * malformed line (rejectMalformedLines()). MRPT's preprocessor (@define, ${}, $env{}, $eval{})
+ * runs on it as in CConfigFile. */
 std::unique_ptr<mrpt::config::CConfigFileBase> loadIniFile(const std::string& path);
 
 /** Every INI section any app of this project reads, so that one file can hold them all:

@@ -7,8 +7,8 @@
 
 namespace hrgbd {
 
-/** `e.what()` without MRPT's banner and backtrace, lines joined by "; " (other exceptions are
- * returned as they are). */
+/** `e.what()` without MRPT's banner, "Message:" label, source "Location:" lines and backtrace,
+ * lines joined by "; " (other exceptions are returned as they are). */
 std::string errorText(const std::exception& e);
 
 }  // namespace hrgbd

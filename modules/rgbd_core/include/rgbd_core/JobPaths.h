@@ -26,4 +26,9 @@ struct JobPath {
  * and hard links (equivalent). The message names both paths and the option or key of each. */
 void checkJobPaths(const std::vector<JobPath>& inputs, const std::vector<JobPath>& outputs);
 
+/** Whether one of `paths` is the file the standard output writes to (`/dev/stdout`, or the file
+ * stdout is redirected to): an app then writes its messages to stderr, which would otherwise be
+ * mixed into that output. */
+bool writesStandardOutput(const std::vector<std::string>& paths);
+
 }  // namespace hrgbd

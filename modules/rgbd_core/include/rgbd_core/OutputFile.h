@@ -3,14 +3,15 @@
  * Output files written in full or not at all, every write checked.
  *
  * An output that is a regular file, or does not exist yet, is written to a temporary file beside
- * it (".<name>.<pid>-<n>.tmp", same folder, so on the same file system) and renamed onto its name
+ * it (".<name>.<pid>-<n>.tmp", same folder, so on the same file system; a name too long for that
+ * keeps as many of its first bytes as fit in 255) and renamed onto its name
  * by commit() once complete and checked: a run that fails on the way leaves the previous file or
  * none, never a truncated one that looks complete. A symbolic link is followed: its target is
  * replaced. An output that exists and is not a regular file (a device such as /dev/null or
  * /dev/full, a FIFO, a terminal) cannot be replaced by renaming: it is written directly, and every
  * write and the close are checked just the same, so /dev/full is an error and /dev/null is not.
  * A program killed outright (SIGKILL, power loss) can leave a temporary file behind, never a
- * partial output under the output's name. */
+ * partial output under the output's name; SIGINT and SIGTERM remove it (Interrupt.h). */
 #include <cstddef>
 #include <fstream>
 #include <ostream>
@@ -44,6 +45,7 @@ class OutputFile {
  private:
   std::string m_path, m_what, m_target, m_write_path;
   bool m_direct = false, m_done = false;
+  int m_slot = -1;  //!< registerTemporary()'s slot of the temporary file
 };
 
 /** An output written through an std::ofstream on an OutputFile. The stream's state is checked by

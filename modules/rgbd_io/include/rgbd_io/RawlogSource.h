@@ -16,6 +16,11 @@ namespace hrgbd {
 /** Ground truth file expected beside a rawlog: "<dir>/<stem>_groundtruth.txt" (TUM format). */
 std::string groundTruthPathFor(const std::string& rawlog_path);
 
+/** Where an output rawlog's (or recording's) ground truth is written: groundTruthPathFor(), or ""
+ * when `output` is a device or FIFO, or named in /dev or /proc (/dev/stdout, also when it is
+ * redirected to a file), beside which no file goes ("/dev/stdout_groundtruth.txt"). */
+std::string groundTruthOutputFor(const std::string& output);
+
 /** Reads CObservation3DRangeScan frames from a rawlog, one at a time. Objects of other types
  * (actions, other observations) are skipped and counted in stats().skipped_objects. Externally
  * stored images are loaded on next() ("<stem>_Images/" or what MRPT detects). Clean end of file

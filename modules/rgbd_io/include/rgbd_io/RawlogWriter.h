@@ -7,6 +7,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "rgbd_core/GzOutput.h"
 
@@ -46,7 +47,8 @@ class RawlogWriter {
    * Throws naming the file or folder if it cannot. */
   explicit RawlogWriter(const std::string& path, ImageStorage images = ImageStorage::Inline,
                         int compression = 6);
-  /** Without close(): the rawlog is discarded (images already written stay). */
+  /** Without close() (an error, Ctrl-C): the rawlog is discarded, and so are the images written
+   * for it, with the image folder when this writer created it: no half-written `_Images/`. */
   ~RawlogWriter();
   /** Appends one object (observation, SensoryFrame, ...). 3D range scans with external storage
    * get their colour image written to a file first; the caller's object is not modified. Throws
@@ -67,6 +69,9 @@ class RawlogWriter {
   std::unique_ptr<GzOutputStream> m_file;
   std::unique_ptr<mrpt::serialization::CArchive> m_archive;
   std::size_t m_count = 0;
+  bool m_closed = false;                   //!< close() completed the rawlog
+  bool m_made_folder = false;              //!< the image folder did not exist before
+  std::vector<std::string> m_image_files;  //!< written, removed again without close()
 };
 
 }  // namespace hrgbd

@@ -96,6 +96,12 @@ struct SimResult {
  * for checkJobPaths() against the inputs (motion file, configuration). */
 std::vector<JobPath> writtenFiles(const SimOutputs& outputs);
 
+/** Throws UsageError when `folder` (rgbd-simulate --tum) holds a TUM dataset rgbd-simulate did not
+ * write: an rgb.txt or depth.txt without the simulator's "# file: rgbd-simulate" line, or a
+ * groundtruth.txt or calibration.txt beside no such list. Its lists, ground truth and camera would
+ * be replaced (a real dataset's, for one). A folder the simulator wrote may be written again. */
+void checkTumOutputFolder(const std::string& folder);
+
 /** Renders and writes the sequence. Throws for bad parameters or unwritable outputs. Every file
  * is written in full or not at all (OutputFile.h); the rawlog's, the lists' and the ground
  * truth's names appear only once the whole sequence is written. `progress` (optional) is updated
