@@ -282,8 +282,11 @@ TEST(Slam, AKeyframeTakenAfterFailuresIsANodeThatLoopsPlace) {
   // every flagged keyframe is a node, whatever node_spacing (0.2 m here)
   const auto nodes =
       std::count_if(s.results.begin(), s.results.end(), [](const auto& r) { return r.node; });
-  for (const auto& r : s.results)
-    if (r.keyframe && !r.registered()) EXPECT_TRUE(r.node);
+  for (const auto& r : s.results) {
+    if (r.keyframe && !r.registered()) {
+      EXPECT_TRUE(r.node);
+    }
+  }
   EXPECT_EQ(s.slam_stats.keyframes, static_cast<std::size_t>(nodes));
   EXPECT_EQ(s.slam_stats.tracker_keyframes, static_cast<std::size_t>(keyframes));
   mrpt::graphs::CNetworkOfPoses3DInf g;

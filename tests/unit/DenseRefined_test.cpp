@@ -14,12 +14,19 @@ using Eigen::Isometry3d;
 
 namespace {
 
-// The desk rendered from the reference pose and `motion` from it.
+// The desk (or another scene) rendered from the reference pose and `motion` from it.
 struct Frames {
-  explicit Frames(const mrpt::poses::CPose3D& motion) : truth(hrgbd::toIsometry(motion)) {
-    const auto scene = hrgbd::sim::makeScene("desk", false);
-    cur.image = render(scene, referencePose() + motion);
-    ref.image = render(scene, referencePose());
+  explicit Frames(const mrpt::poses::CPose3D& motion, const std::string& scene_type = "desk")
+      : truth(hrgbd::toIsometry(motion)) {
+    const auto scene = hrgbd::sim::makeScene(scene_type, false);
+    // the desk's pairs from above the desk; other scenes from where their sweeps look
+    const auto from =
+        scene_type == "desk"
+            ? referencePose()
+            : hrgbd::sim::lookAt(scene.look_at + scene.view_dir.normalized() * scene.distance,
+                                 scene.look_at);
+    cur.image = render(scene, from + motion);
+    ref.image = render(scene, from);
   }
   hrgbd::Frame cur, ref;
   Isometry3d truth;
@@ -194,5 +201,58 @@ TEST(DenseRefined, APredictionThatDoesNotExplainTheDepthGivesWayToTheSparseFit) 
     EXPECT_EQ(r.status, hrgbd::FrameResult::Status::LargeResiduals);
     EXPECT_NE(r.detail.find("neither motion explains it"), std::string::npos) << r.detail;
     EXPECT_EQ(hrgbd::toString(r.seen.path), "photometric+dense(refused)");
+  }
+}
+
+TEST(DenseRefined, AMotionTheSceneDoesNotConstrainIsFlaggedDegenerate) {
+  // The camera moving 3 cm where the scene does not tell (along the stripes of a wall, along a
+  // plain wall, along a corridor): the sparse fit and its refinement are flagged whatever they
+  // say; the desk registers.
+  for (const std::string scene : {"stripes", "wall", "corridor", "desk"}) {
+    // optical y (down in the image: along the stripes), optical z (along the corridor)
+    const mrpt::poses::CPose3D along(0, scene == "corridor" ? 0 : 0.03,
+                                     scene == "corridor" ? 0.03 : 0, 0, 0, 0);
+    Frames f(along, scene);
+    hrgbd::RegistrationResult s;
+    s.status = hrgbd::FrameResult::Status::Ok;
+    s.sparse_ok = true;
+    s.inliers = 20;
+    s.T = Isometry3d::Identity();  // what a fit on the stripes finds: no motion
+    s.seen.path.sparse = hrgbd::FramePath::Sparse::Geometric;
+    const auto r = refined(f, s, Isometry3d::Identity());
+    if (scene == "desk") {
+      EXPECT_TRUE(r.ok()) << r.detail;
+      continue;
+    }
+    EXPECT_EQ(r.status, hrgbd::FrameResult::Status::Degenerate) << scene << ": " << r.detail;
+    EXPECT_NE(r.detail.find("does not constrain the motion"), std::string::npos) << r.detail;
+  }
+}
+
+TEST(DenseRefined, ASparseFitOnFramesOfNoiseIsRefused) {
+  // Random grey levels and depths (1-4 m): features match by chance, and a sparse fit found on
+  // them must not pass as a motion; the desk's does.
+  for (const bool noise : {true, false}) {
+    Frames f(kMotion);
+    if (noise) {
+      cv::RNG rng(7);
+      for (auto* image : {&f.cur.image, &f.ref.image}) {
+        rng.fill(image->grey, cv::RNG::UNIFORM, 0, 255);
+        rng.fill(image->depth, cv::RNG::UNIFORM, 1.0, 4.0);
+      }
+    }
+    hrgbd::RegistrationResult s;
+    s.status = hrgbd::FrameResult::Status::Ok;
+    s.sparse_ok = true;
+    s.inliers = 20;
+    s.T = noise ? Isometry3d(Eigen::Translation3d(0.02, 0, 0)) : f.truth;
+    s.seen.path.sparse = hrgbd::FramePath::Sparse::Geometric;
+    const auto r = refined(f, s, s.T);
+    if (!noise) {
+      EXPECT_TRUE(r.ok()) << r.detail;
+      continue;
+    }
+    EXPECT_EQ(r.status, hrgbd::FrameResult::Status::LargeResiduals) << r.detail;
+    EXPECT_NE(r.detail.find("does not explain it"), std::string::npos) << r.detail;
   }
 }

@@ -32,6 +32,7 @@ TEST(PaperPreset, DiffersFromTheDefaultsInThePapersSwitchesOnly) {
   const mrpt::config::CConfigFile defaults(dir + "/config.ini"), paper(dir + "/config/paper.ini");
   const Keys expected{{"Odometry", "keyframe_max_translation"},
                       {"Odometry", "keyframe_after_failures"},
+                      {"Odometry", "max_predicted_frames"},
                       {"Odometry", "min_photometric_inliers"},
                       {"Odometry", "geometric_fallback"},
                       {"Geometric", "refine_iterations"},
@@ -49,6 +50,7 @@ TEST(PaperPreset, DiffersFromTheDefaultsInThePapersSwitchesOnly) {
   p.loadFromConfigFile(paper, "Odometry");
   EXPECT_EQ(p.keyframe_max_translation, 0.0);
   EXPECT_EQ(p.keyframe_after_failures, 0);
+  EXPECT_EQ(p.max_predicted_frames, 0);  // the paper's constant velocity over any run
   EXPECT_FALSE(p.dense.enabled);
   EXPECT_FALSE(p.geometric_fallback);
   EXPECT_EQ(p.geometric.refine_iterations, 0);

@@ -130,6 +130,21 @@ TEST(Tracker, HoldPolicyKeepsThePose) {
   EXPECT_EQ(run.results[2].pose, run.results[1].pose);
 }
 
+TEST(Tracker, ALongFlaggedRunIsExtrapolatedOverMaxPredictedFramesThenHeld) {
+  std::deque<hrgbd::RegistrationResult> script{step(0.1), step(0.1)};
+  for (int i = 0; i < 8; ++i) script.push_back(step(0, 0, Status::TooFewMatches));
+  for (const int max_predicted : {5, 0}) {
+    hrgbd::OdometryParams p;
+    p.max_predicted_frames = max_predicted;
+    const auto run = track(script, p);
+    ASSERT_EQ(run.results.size(), 11u);
+    // frames 3-7 extrapolated by 0.1 each; then held at 0.7, or on to 1.0 without the limit
+    EXPECT_NEAR(x(run.results[7]), 0.7, 1e-9);
+    EXPECT_NEAR(x(run.results[10]), max_predicted ? 0.7 : 1.0, 1e-9);
+    EXPECT_EQ(run.results[10].status, Status::TooFewMatches);
+  }
+}
+
 TEST(Tracker, ImplausibleStepsAreFlaggedNotChained) {
   hrgbd::OdometryParams p;
   p.max_step_translation = 0.3;

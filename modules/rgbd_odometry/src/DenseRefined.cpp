@@ -26,23 +26,23 @@ struct DepthCheck {
   std::string why;      //!< why it does not vouch for the motion: short, or not judged
 };
 
-// every 2nd pixel (as many points as the default finest level's), within 3 sigma of the
-// depth-noise model of two readings; its time is added to `ms`
+// every `stride`-th pixel (2: as many points as the default finest level's), within 3 sigma of
+// the depth-noise model of two readings, at least `floor` of them (min_depth_agreement or
+// min_depth_agreement_sparse); its time is added to `ms`
 DepthCheck checkDepth(const Frame& cur, const Frame& ref, const Eigen::Isometry3d& T,
-                      const DenseParams& p, double& ms) {
+                      const DenseParams& p, double& ms, double floor, int stride = 2) {
   const DepthTolerance within3sigma{0, 3 * std::sqrt(2.0) * p.depth_noise};
   const DepthAgreement a =
-      timed(ms, [&] { return depthAgreement(cur.image, ref.image, T, within3sigma, 2); });
+      timed(ms, [&] { return depthAgreement(cur.image, ref.image, T, within3sigma, stride); });
   DepthCheck c;
-  c.judged = a.compared >= static_cast<std::size_t>(p.min_pixels);
-  c.passed = !c.judged || a.share() >= p.min_depth_agreement;
+  c.judged = a.compared * stride * stride >= static_cast<std::size_t>(4 * p.min_pixels);
+  c.passed = !c.judged || a.share() >= floor;
   if (!c.judged) c.why = "too few points on known reference depth";
   if (!c.passed) {
     std::ostringstream why;
     why << std::setprecision(2) << a.share()
-        << " of the points on known reference depth agree with the reference depth (< "
-           "min_depth_agreement "
-        << p.min_depth_agreement << ")";
+        << " of the points on known reference depth agree with the reference depth (< " << floor
+        << ")";
     c.why = why.str();
   }
   return c;
@@ -123,15 +123,17 @@ RegistrationResult DenseRefined::align(Frame& cur, Frame& ref) {
   Eigen::Isometry3d T = d.T;
   std::size_t start = d.start;
   if (m_params.min_depth_agreement > 0 && (!r.ok() || d.start != 0)) {
-    const DepthCheck winner = checkDepth(cur, ref, d.T, m_params, r.seen.ms.refine);
+    const DepthCheck winner =
+        checkDepth(cur, ref, d.T, m_params, r.seen.ms.refine, m_params.min_depth_agreement);
     if (!winner.passed && !r.ok()) {
       r.detail += "; dense: " + winner.why + ": the motion found does not explain it";
       return r;
     }
     if (!winner.passed) {
-      const DepthCheck sparse = d.first_start_refined ? checkDepth(cur, ref, *d.first_start_refined,
-                                                                   m_params, r.seen.ms.refine)
-                                                      : DepthCheck{};
+      const DepthCheck sparse = d.first_start_refined
+                                    ? checkDepth(cur, ref, *d.first_start_refined, m_params,
+                                                 r.seen.ms.refine, m_params.min_depth_agreement)
+                                    : DepthCheck{};
       if (!sparse.judged || !sparse.passed) {
         r.status = FrameResult::Status::LargeResiduals;
         r.detail = "dense: from the motion prediction, " + winner.why + "; from the sparse fit, " +
@@ -140,6 +142,17 @@ RegistrationResult DenseRefined::align(Frame& cur, Frame& ref) {
         return r;
       }
       T = *d.first_start_refined, start = 0;
+    }
+  }
+  // the sparse fit's refinement must explain some of the reference's depth too: frames of noise
+  // (random colour and depth), whose features match by chance, do not
+  if (m_params.min_depth_agreement_sparse > 0 && start == 0 && r.ok()) {
+    const DepthCheck c =
+        checkDepth(cur, ref, T, m_params, r.seen.ms.refine, m_params.min_depth_agreement_sparse, 4);
+    if (!c.passed) {
+      r.status = FrameResult::Status::LargeResiduals;
+      r.detail = "dense: from the sparse fit, " + c.why + ": the motion does not explain it";
+      return r;
     }
   }
   if (!near(starts[start], T, m_params.max_correction, m_params.max_correction_deg)) {

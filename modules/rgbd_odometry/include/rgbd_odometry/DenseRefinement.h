@@ -81,6 +81,11 @@ struct DenseParams : public Params<DenseParams> {
    * 0.00-0.32, and 0.39 on fr1/rpy with its depth scaled by 1.1. Fewer than min_pixels points on
    * known reference depth (a keyframe without depth): not judged. 0 = no check. */
   double min_depth_agreement = 0.45;
+  /** The refinement of a sparse fit must explain some of the reference's depth as well: at least
+   * this share of its points (every 4th pixel), as min_depth_agreement. Frames of noise (random
+   * colour and depth), whose features match by chance, agreed at 0.024 at most; the frames of
+   * the six shared real folders at 0.48 (fr1/rpy) or more. 0 = no check. */
+  double min_depth_agreement_sparse = 0.2;
   /** [ms] readout time of a rolling shutter, first row to last, of colour and depth alike; each
    * row's points are moved to the frame time (the middle row) with the camera's velocity.
    * 0 = a global shutter, unless the input knows its camera's (the playback then takes that:
@@ -122,6 +127,9 @@ struct DenseParams : public Params<DenseParams> {
                 Range::closed(0, 1.0 / 3));
     HRGBD_PARAM(min_depth_agreement,
                 "refinement alone / from the prediction: share of points agreeing with the depth",
+                Range::closed(0, 1));
+    HRGBD_PARAM(min_depth_agreement_sparse,
+                "refinement of a sparse fit: share of points agreeing with the depth",
                 Range::closed(0, 1));
     HRGBD_PARAM(rolling_shutter_ms, "[ms] rolling-shutter readout, first to last row (0 = global)",
                 Range::atLeast(0));
