@@ -4,7 +4,6 @@
  * Gauss-Newton system of their residuals against the reference at a pose. refineDense()
  * (DenseRefinement.cpp) runs the levels coarse to fine. */
 #include <Eigen/Geometry>
-#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -35,16 +34,14 @@ struct NormalEquations {
   Eigen::Matrix2d gradients = Eigen::Matrix2d::Zero();
 };
 
-/** The current frame's points with depth: at the frame time in double (for startAt), and, in
- * float and one array per coordinate for the evaluations' vectorised transform and projection,
- * moved so that T maps them where the reference saw them: at the time of the reference row they
- * land on (undoes the reference's rolling shutter; the frame-time point for a global shutter). */
-struct CurrentPoints {
-  std::vector<Eigen::Vector3d> P;
-  std::vector<float> x, y, z;      //!< at the reference rows
-  std::vector<float> grey;         //!< intensity
-  std::vector<uint8_t> geometric;  //!< with a point-to-plane term
-  std::size_t size() const { return P.size(); }
+// The point of the current frame with its intensity; `geometric`: it has a point-to-plane term.
+struct CurrentPoint {
+  Eigen::Vector3d P;  //!< at the frame time
+  /** P moved so that T maps it where the reference saw it: at the time of the reference row it
+   * lands on (undoes the reference's rolling shutter; P for a global shutter) */
+  Eigen::Vector3d at_reference_rows;
+  float grey;
+  bool geometric;
 };
 
 /** The residuals of one level's current points against its reference, at any pose. */
@@ -63,17 +60,17 @@ class LevelSolver {
 
  private:
   struct TangentPlane {
-    Eigen::Vector3f normal;  //!< the reference's, unit
-    float distance;          //!< [m] of the point from the plane, signed
+    Eigen::Vector3d normal;  //!< the reference's, unit
+    double distance;         //!< [m] of the point from the plane, signed
   };
-  std::optional<TangentPlane> tangentPlane(const Eigen::Vector3f& P, int ui, int vi,
+  std::optional<TangentPlane> tangentPlane(const Eigen::Vector3d& P, int ui, int vi,
                                            float zr) const;
   template <class F>
   void forEachPair(const Eigen::Isometry3d& T, F f, std::size_t step = 1) const;
 
   const DenseLevel& m_ref;
   const DenseParams& m_p;
-  CurrentPoints m_points;
+  std::vector<CurrentPoint> m_points;
   ReadoutMotion m_ref_readout;         //!< the reference's motion during its readout
   std::size_t m_geometric_points = 0;  //!< of them, with a point-to-plane term
   /** each point-to-plane pair stands for stride^2 pixels: the terms keep their balance */
