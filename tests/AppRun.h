@@ -71,4 +71,21 @@ inline Run expectFailure(const std::string& app, const std::string& args,
   return r;
 }
 
+/** A TUM folder of `frames` simulated frames at `dir`; returns it. */
+inline std::string makeTumFolder(const std::filesystem::path& dir, int frames = 3) {
+  const auto r = runApp("rgbd-simulate",
+                        "-q --scene wall -n " + std::to_string(frames) + " --tum " + dir.string());
+  EXPECT_EQ(r.code, 0) << r.err;
+  return dir.string();
+}
+
+/** The lines of `text` that are neither empty nor comments. */
+inline std::vector<std::string> dataLines(const std::string& text) {
+  std::istringstream in(text);
+  std::vector<std::string> out;
+  for (std::string l; std::getline(in, l);)
+    if (!l.empty() && l[0] != '#') out.push_back(l);
+  return out;
+}
+
 }  // namespace hrgbd::test

@@ -13,8 +13,10 @@
 namespace {
 
 namespace fs = std::filesystem;
+using hrgbd::test::dataLines;
 using hrgbd::test::expectFailure;
 using hrgbd::test::expectRefused;
+using hrgbd::test::makeTumFolder;
 using hrgbd::test::runApp;
 using hrgbd::test::slurp;
 
@@ -27,26 +29,10 @@ std::string copyDesk(const fs::path& dir) {
   return (dir / "desk_near.rawlog").string();
 }
 
-/** A TUM folder of 3 simulated frames at `dir`; returns it. */
-std::string makeTumFolder(const fs::path& dir) {
-  const auto r = runApp("rgbd-simulate", "--scene wall -n 3 --tum " + dir.string());
-  EXPECT_EQ(r.code, 0) << r.err;
-  return dir.string();
-}
-
-/** The lines of `path` that are not comments. */
-std::vector<std::string> dataLines(const fs::path& path) {
-  std::ifstream in(path);
-  std::vector<std::string> out;
-  for (std::string l; std::getline(in, l);)
-    if (!l.empty() && l[0] != '#') out.push_back(l);
-  return out;
-}
-
 /** Rewrites the TUM folder's rgb.txt and depth.txt with `stamps` for its (sorted) images. */
 void restamp(const fs::path& tum, const std::vector<std::string>& stamps) {
   for (const auto* list : {"rgb.txt", "depth.txt"}) {
-    const auto old = dataLines(tum / list);
+    const auto old = dataLines(slurp(tum / list));
     std::ofstream out(tum / list);
     for (std::size_t i = 0; i < old.size() && i < stamps.size(); ++i)
       out << stamps[i] << " " << old[i].substr(old[i].find(' ') + 1) << "\n";
@@ -95,7 +81,7 @@ TEST(AppOutputs, OdometryRefusesOutputsThatNameAnInputAndLeavesThemAlone) {
   const auto ok =
       runApp("hybrid-rgbd-odometry", run + "-t " + t + " --csv " + (dir / "f.csv").string());
   EXPECT_EQ(ok.code, 0) << ok.err;
-  EXPECT_EQ(dataLines(t).size(), 2u);
+  EXPECT_EQ(dataLines(slurp(t)).size(), 2u);
 }
 
 TEST(AppOutputs, AnIniOutputNamingTheTumGroundTruthIsAConfigError) {
@@ -108,7 +94,7 @@ TEST(AppOutputs, AnIniOutputNamingTheTumGroundTruthIsAConfigError) {
                                {"[Playback] trajectory", "the TUM folder's groundtruth.txt"});
   EXPECT_EQ(slurp(dir / "seq" / "groundtruth.txt"), gt_bytes);
   EXPECT_TRUE(r.out.empty()) << r.out;
-  const auto first = dataLines(dir / "seq" / "rgb.txt")[0];
+  const auto first = dataLines(slurp(dir / "seq" / "rgb.txt"))[0];
   const auto image = tum + "/" + first.substr(first.find(' ') + 1);
   for (const auto& bad :
        {"--csv " + tum + "/rgb.txt", "--map-ply " + tum + "/depth.txt", "--csv " + image})
@@ -222,7 +208,7 @@ TEST(AppOutputs, ARunThatFailsHalfWayLeavesNoOutputThatLooksComplete) {
   const fs::path dir = hrgbd::test::tempDir("outputs_halfway");
   const auto tum = makeTumFolder(dir / "seq");
   // The third frame's colour image is gone: the run fails after two frames.
-  const auto third = dataLines(dir / "seq" / "rgb.txt")[2];
+  const auto third = dataLines(slurp(dir / "seq" / "rgb.txt"))[2];
   fs::remove(dir / "seq" / third.substr(third.find(' ') + 1));
   std::ofstream(dir / "t.txt") << "# an earlier run\n";
   const auto outputs = "-t " + (dir / "t.txt").string() + " --csv " + (dir / "f.csv").string() +
@@ -254,7 +240,7 @@ TEST(AppOutputs, FrameTimeStampsReachTheTrajectoryAndCsvExactly) {
                   "-q -m rgb_only -i " + tum + " -t " + t.string() + " --csv " + csv.string());
   ASSERT_EQ(r.code, 0) << r.err;
   auto check = [&](const fs::path& file, char sep) {
-    const auto lines = dataLines(file);
+    const auto lines = dataLines(slurp(file));
     ASSERT_EQ(lines.size(), want.size() + (sep == ',' ? 1 : 0)) << file;
     for (std::size_t i = 0; i < want.size(); ++i)
       EXPECT_EQ(lines[i + (sep == ',' ? 1 : 0)].rfind(want[i] + sep, 0), 0u)
@@ -285,7 +271,7 @@ TEST(AppOutputs, TimeStampsMrptCannotHoldAreRefusedNamingTheFileAndLine) {
                                          {"1700000000.12345678", "finer than 100 ns"}}) {
     restamp(dir / "seq", {"1700000000", "1700000000.1", "1700000000.2"});
     // The second entry (line 2 of the rewritten list) gets the bad stamp.
-    const auto lines = dataLines(dir / "seq" / "rgb.txt");
+    const auto lines = dataLines(slurp(dir / "seq" / "rgb.txt"));
     std::ofstream(dir / "seq" / "rgb.txt") << lines[0] << "\n"
                                            << c.stamp << lines[1].substr(lines[1].find(' ')) << "\n"
                                            << lines[2] << "\n";
@@ -302,7 +288,7 @@ TEST(AppOutputs, TimeStampsMrptCannotHoldAreRefusedNamingTheFileAndLine) {
 TEST(AppOutputs, EvalNeverPrintsInfOrNan) {
   const fs::path dir = hrgbd::test::tempDir("outputs_eval");
   const auto gt = kSource + "/rawlogs/desk_near_groundtruth.txt";
-  const auto poses = dataLines(gt);
+  const auto poses = dataLines(slurp(gt));
   auto write = [&](const std::string& name, auto edit) {
     std::ofstream out(dir / name);
     for (std::size_t i = 0; i < poses.size(); ++i) out << edit(i, poses[i]) << "\n";

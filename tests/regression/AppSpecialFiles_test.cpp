@@ -22,8 +22,10 @@ extern char** environ;
 namespace {
 
 namespace fs = std::filesystem;
+using hrgbd::test::dataLines;
 using hrgbd::test::expectFailure;
 using hrgbd::test::expectRefused;
+using hrgbd::test::makeTumFolder;
 using hrgbd::test::runApp;
 using hrgbd::test::slurp;
 
@@ -31,23 +33,6 @@ const std::string kOdometry = "hybrid-rgbd-odometry";
 const std::string kDesk = std::string(HRGBD_SOURCE_DIR) + "/rawlogs/desk_near.rawlog";
 
 std::string app(const std::string& name) { return std::string(HRGBD_BINARY_DIR) + "/apps/" + name; }
-
-/** A TUM folder of `frames` simulated frames at `dir`; returns it. */
-std::string makeTumFolder(const fs::path& dir, int frames = 3) {
-  const auto r = runApp("rgbd-simulate",
-                        "-q --scene wall -n " + std::to_string(frames) + " --tum " + dir.string());
-  EXPECT_EQ(r.code, 0) << r.err;
-  return dir.string();
-}
-
-/** The lines of `text` that are neither empty nor comments. */
-std::vector<std::string> dataLines(const std::string& text) {
-  std::istringstream in(text);
-  std::vector<std::string> out;
-  for (std::string l; std::getline(in, l);)
-    if (!l.empty() && l[0] != '#') out.push_back(l);
-  return out;
-}
 
 /** Starts `argv` with stdout and stderr to files in `dir`; returns its process id. */
 pid_t spawn(const std::vector<std::string>& argv, const fs::path& dir) {

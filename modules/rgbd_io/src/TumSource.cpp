@@ -155,8 +155,8 @@ TumSource::TumSource(const std::string& folder, const TumSourceParams& params)
     for (const auto& e : *list) {
       m_inputs.push_back({imagePath(e.file), "the TUM folder's image " + e.file});
       const auto parent = std::filesystem::path(imagePath(e.file)).parent_path();
-      if (!std::filesystem::equivalent(parent, folder, ec) &&
-          image_folders.insert(parent.string()).second)
+      if (image_folders.insert(parent.string()).second &&  // each folder once, not per image
+          !std::filesystem::equivalent(parent, folder, ec))
         m_inputs.push_back(
             {parent.string(),
              "the TUM folder's image folder '" + parent.lexically_relative(folder).string() + "'",
