@@ -35,7 +35,6 @@ TEST(PaperPreset, DiffersFromTheDefaultsInThePapersSwitchesOnly) {
                       {"Odometry", "max_predicted_frames"},
                       {"Odometry", "min_photometric_inliers"},
                       {"Odometry", "geometric_fallback"},
-                      {"Geometric", "refine_iterations"},
                       {"Dense", "enabled"},
                       {"Playback", "input"},  // paths relative to the file
                       {"Benchmark", "sim_motions"},

@@ -21,24 +21,25 @@ double angle(const Eigen::Vector3f& a, const Eigen::Vector3f& b) {
 constexpr int kOrientationDim = 2;  // p of eq. (5): a direction has two degrees of freedom
 
 // Algorithm 1 lines 5-13: of `references` random candidates, the one with the least k'-th order
-// squared angular residual over `rest`; returns it and that residual [rad^2].
+// squared angular residual over `rest`; returns it and that residual [rad^2]. The angle falls as
+// the cosine rises, so the k'-th order statistic is taken on cosines and only it goes through
+// acos (acos per pair was a quarter of the stage's time).
 std::pair<std::size_t, double> bestReference(const Points& normals,
                                              const std::vector<std::size_t>& rest, std::size_t k,
                                              int references, std::mt19937& rng) {
-  double best = std::numeric_limits<double>::infinity();
+  float best_cos = -2;
   std::size_t best_ref = rest.front();
   std::uniform_int_distribution<std::size_t> pick(0, rest.size() - 1);
-  std::vector<double> r2(rest.size());
+  std::vector<float> neg_cos(rest.size());
   for (int i = 0; i < references; ++i) {
     const std::size_t ref = rest[pick(rng)];
-    for (std::size_t j = 0; j < rest.size(); ++j) {
-      const double phi = angle(normals[ref], normals[rest[j]]);
-      r2[j] = phi * phi;
-    }
-    std::nth_element(r2.begin(), r2.begin() + (k - 1), r2.end());
-    if (r2[k - 1] < best) best = r2[k - 1], best_ref = ref;
+    const Eigen::Vector3f& n = normals[ref];
+    for (std::size_t j = 0; j < rest.size(); ++j) neg_cos[j] = -n.dot(normals[rest[j]]);
+    std::nth_element(neg_cos.begin(), neg_cos.begin() + (k - 1), neg_cos.end());
+    if (-neg_cos[k - 1] > best_cos) best_cos = -neg_cos[k - 1], best_ref = ref;
   }
-  return {best_ref, best};
+  const double phi = std::acos(std::clamp(static_cast<double>(best_cos), -1.0, 1.0));
+  return {best_ref, phi * phi};
 }
 
 // Line 14: eqs. (4)-(5) on the sorted residuals to `ref` separate its group, which is appended
@@ -70,11 +71,11 @@ std::vector<std::size_t> farthestFromGroups(const Points& normals,
                                             const std::vector<std::size_t>& rest,
                                             const std::vector<DominantOrientation>& groups,
                                             int count) {
-  std::vector<std::pair<double, std::size_t>> ranked;
+  std::vector<std::pair<float, std::size_t>> ranked;  // cosine to the nearest group, point
   for (const std::size_t j : rest) {
-    double nearest = M_PI;
-    for (const auto& g : groups) nearest = std::min(nearest, angle(g.normal, normals[j]));
-    ranked.push_back({-nearest, j});
+    float nearest = -1;
+    for (const auto& g : groups) nearest = std::max(nearest, g.normal.dot(normals[j]));
+    ranked.push_back({nearest, j});
   }
   std::nth_element(ranked.begin(), ranked.begin() + count, ranked.end());
   std::vector<std::size_t> out;

@@ -156,14 +156,16 @@ Points estimateNormals(const Points& pts, const PointKdTree& tree, double radius
       Eigen::Vector3f mean = Eigen::Vector3f::Zero();
       for (const auto& [j, d2] : nbrs) mean += pts[j];
       mean /= static_cast<float>(nbrs.size());
-      Eigen::Matrix3f cov = Eigen::Matrix3f::Zero();
+      Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
       for (const auto& [j, d2] : nbrs) {
-        const Eigen::Vector3f d = pts[j] - mean;
+        const Eigen::Vector3d d = (pts[j] - mean).cast<double>();
         cov += d * d.transpose();
       }
-      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3f> eig(cov);
-      n = eig.eigenvectors().col(0);  // smallest eigenvalue: the plane's normal
-      if (n.dot(pts[i]) > 0) n = -n;  // towards the camera at the origin
+      // closed form (3x3, in double: accurate for the smallest eigenvector of a flat patch)
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
+      eig.computeDirect(cov);
+      n = eig.eigenvectors().col(0).cast<float>();  // smallest eigenvalue: the plane's normal
+      if (n.dot(pts[i]) > 0) n = -n;                // towards the camera at the origin
     }
     normals[i] = n;
   }
