@@ -35,11 +35,9 @@ struct GeometricParams : public Params<GeometricParams> {
   // Addition to the paper: point-to-plane ICP on the down-sampled clouds after MSSE.
   /** Refinement iterations, 0 = the paper's geometric path exactly. The IS3D keypoints are cell
    * centroids whose position jitters by up to half a cell between frames, which limits the
-   * MSSE fit to about 1 cm / 1 deg per frame. With the dense refinement on (the default), which
-   * fits point-to-plane on the full depth image, 0: on the cell centroids the ICP pulled the
-   * wide-baseline fr3/cabinet keyframes away from their MSSE fits (aligned ATE 0.091 m with 10
-   * iterations, 0.033 m without; the other real folders and the simulated suite within 1.5 %) and
-   * cost the plain structure a fifth of its tracking time. 10 when [Dense] is off. */
+   * MSSE fit to about 1 cm / 1 deg per frame. 0 while the dense refinement (the default) fits
+   * point-to-plane on the full depth image: the ICP on the cell centroids only repeats that, and
+   * on wide baselines pulls the fits away (config.ini says what was measured). 10 without it. */
   int refine_iterations = 0;
   double refine_max_distance = 0.05;  //!< [m] farther point pairs are not used
   /** Share of the source cloud paired after the refinement below which the frame is rejected
