@@ -1,0 +1,87 @@
+// What the apps print while they work, through the real binaries: the steps after the last frame
+// each on a line of its own (on a terminal and in a log). No timing is asserted: only that times
+// are there.
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <string>
+
+#include "AppRun.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using hrgbd::test::app;
+using hrgbd::test::runApp;
+using hrgbd::test::slurp;
+
+const std::string kDesk = std::string(HRGBD_SOURCE_DIR) + "/rawlogs/desk_near.rawlog";
+
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+/** `text` has a line matching `pattern` (ECMAScript, whole line). */
+bool hasLine(const std::string& text, const std::string& pattern) {
+  const std::regex re(pattern);
+  std::istringstream in(text);
+  for (std::string l; std::getline(in, l);) {
+    if (!l.empty() && l.back() == '\r') l.pop_back();  // a terminal's line ends
+    if (std::regex_match(l, re)) return true;
+  }
+  return false;
+}
+
+const std::string kTime = R"( \.\.\. [0-9.]+ s)";  // a timed step's end: " ... 1.2 s"
+
+}  // namespace
+
+// ---- playback: the steps after the last frame ------------------------------------------------
+
+TEST(AppProgress, StepsAfterTheLastFrameEachPrintALineWithTheirTime) {
+  const fs::path dir = hrgbd::test::tempDir("progress_steps");
+  const auto out = [&](const std::string& f) { return (dir / f).string(); };
+  const auto r = runApp("hybrid-rgbd-odometry", "--slam -i " + kDesk + " -t " + out("t.txt") +
+                                                    " --map-ply " + out("m.ply") + " --graph " +
+                                                    out("g.graph") + " --csv " + out("f.csv"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.err.find('\r'), std::string::npos) << "whole lines in a file: " << r.err;
+  EXPECT_EQ(r.out.find('\r'), std::string::npos) << r.out;
+  EXPECT_TRUE(contains(r.err, "20 frames in ")) << r.err;
+  // in order, each with its time
+  std::size_t at = 0;
+  for (const std::string& step :
+       {"SLAM: last loop searches and final optimisation" + kTime,
+        std::string("SLAM: [0-9]+ nodes .*"), "SLAM: outputs moved to the optimised poses" + kTime,
+        "trajectory \\(SLAM, optimised\\): " + out("t.txt") + kTime, "CSV: " + out("f.csv") + kTime,
+        "map \\(PLY, [0-9]+ points\\): " + out("m.ply") + kTime,
+        "pose graph \\(MRPT text format\\): " + out("g.graph") + kTime}) {
+    std::smatch m;
+    const std::string rest = r.out.substr(at);
+    ASSERT_TRUE(std::regex_search(rest, m, std::regex("(^|\n)" + step + "\n"))) << step << "\n"
+                                                                                << r.out;
+    at += static_cast<std::size_t>(m.position(0) + m.length(0)) - 1;
+  }
+}
+
+TEST(AppProgress, OnATerminalTheProgressLineEndsBeforeTheStepsAndCountsThem) {
+  // stdout and stderr on one terminal (script(1) gives the run a pseudo-terminal): the SLAM
+  // steps were printed onto the progress line ("... 0.1 s leftSLAM: ...")
+  if (std::system("command -v script > /dev/null") != 0) GTEST_SKIP() << "no script(1)";
+  const fs::path dir = hrgbd::test::tempDir("progress_terminal");
+  const auto cmd = app("hybrid-rgbd-odometry") + " --slam -i " + kDesk + " -t " +
+                   (dir / "t.txt").string() + " --map-ply " + (dir / "m.ply").string();
+  const auto shell =
+      "script -qec '" + cmd + "' /dev/null < /dev/null > " + (dir / "tty").string() + " 2>&1";
+  ASSERT_EQ(std::system(shell.c_str()), 0) << slurp(dir / "tty");
+  const auto tty = slurp(dir / "tty");
+  EXPECT_TRUE(std::regex_search(tty, std::regex("\r[^\n]"))) << "redrawn in place: " << tty;
+  EXPECT_TRUE(contains(tty, " left + final steps")) << tty;
+  const auto step = tty.find("SLAM: last loop searches");
+  ASSERT_NE(step, std::string::npos) << tty;
+  ASSERT_GT(step, 0u);
+  EXPECT_EQ(tty[step - 1], '\n') << "a line of its own: " << tty.substr(0, step + 40);
+  const auto last_redraw = tty.rfind('\r', tty.rfind("20 frames in "));
+  EXPECT_LT(last_redraw, step);
+  EXPECT_TRUE(hasLine(tty, "SLAM: last loop searches and final optimisation" + kTime)) << tty;
+}
