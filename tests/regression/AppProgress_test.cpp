@@ -1,6 +1,8 @@
 // What the apps print while they work, through the real binaries: the steps after the last frame
-// each on a line of its own (on a terminal and in a log). No timing is asserted: only that times
-// are there.
+// each on a line of its own (on a terminal and in a log), the benchmark's run count and its
+// partial results when interrupted. No timing is asserted: only that times are there.
+#include <signal.h>
+
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -12,8 +14,11 @@ namespace {
 
 namespace fs = std::filesystem;
 using hrgbd::test::app;
+using hrgbd::test::exitCode;
 using hrgbd::test::runApp;
 using hrgbd::test::slurp;
+using hrgbd::test::spawn;
+using hrgbd::test::waitFor;
 
 const std::string kDesk = std::string(HRGBD_SOURCE_DIR) + "/rawlogs/desk_near.rawlog";
 
@@ -84,4 +89,58 @@ TEST(AppProgress, OnATerminalTheProgressLineEndsBeforeTheStepsAndCountsThem) {
   const auto last_redraw = tty.rfind('\r', tty.rfind("20 frames in "));
   EXPECT_LT(last_redraw, step);
   EXPECT_TRUE(hasLine(tty, "SLAM: last loop searches and final optimisation" + kTime)) << tty;
+}
+
+// ---- rgbd-benchmark: run count, time left, partial results -----------------------------------
+
+TEST(AppProgress, BenchmarkCountsRunsAndAnInterruptWritesTheFinishedOnesAsPartial) {
+  const fs::path dir = hrgbd::test::tempDir("progress_benchmark");
+  // the bundled desk (20 frames), then a long input: interrupted while it runs
+  const auto tum = hrgbd::test::makeLongTumFolder(dir / "long");
+  std::ofstream(dir / "b.ini") << "[Benchmark]\nmethods = rgb_only\nsim_scenes =\n"
+                               << "real_sequences = " << kDesk << " " << tum << "\n";
+  const fs::path run = dir / "run";
+  fs::create_directories(run);
+  const auto pid = spawn({app("rgbd-benchmark"), "-c", (dir / "b.ini").string()}, run);
+  // stdout is a file: each line is there as the run ends (it was held back until the exit)
+  const bool first = waitFor(pid, [&] { return contains(slurp(run / "out"), "run 1 of 2: "); });
+  ASSERT_TRUE(first) << slurp(run / "out") << slurp(run / "err");
+  kill(pid, SIGTERM);
+  EXPECT_EQ(exitCode(pid), 143) << slurp(run / "err");
+  const auto out = slurp(run / "out");
+  EXPECT_TRUE(hasLine(out, "run 1 of 2: real/desk_near +rgb_only .* registered, .*; .* left"))
+      << out;
+  EXPECT_TRUE(contains(out, "partial results (terminated (SIGTERM) after 1 of 2 runs): ")) << out;
+  EXPECT_TRUE(contains(slurp(run / "err"), "rgbd-benchmark: terminated (SIGTERM): stopped"));
+  const auto md = slurp(dir / "benchmark" / "results_partial.md");
+  EXPECT_EQ(md.rfind("# Benchmark results (PARTIAL)", 0), 0u) << md;
+  EXPECT_TRUE(contains(md, "terminated (SIGTERM) after 1 of 2 runs")) << md;
+  EXPECT_TRUE(contains(md, "| real/desk_near |")) << md;
+  EXPECT_FALSE(contains(md, "| real/long |")) << md;
+  EXPECT_EQ(hrgbd::test::dataLines(slurp(dir / "benchmark" / "results_partial.csv")).size(), 2u);
+  EXPECT_FALSE(fs::exists(dir / "benchmark" / "results.md"));
+  EXPECT_FALSE(fs::exists(dir / "benchmark" / "results.csv"));
+
+  // a benchmark that finishes replaces them with the whole results
+  const auto r =
+      runApp("rgbd-benchmark", "-q -c " + (dir / "b.ini").string() + " --real-sequences " + kDesk);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(hasLine(r.out, "run 1 of 1: real/desk_near .*")) << r.out;
+  EXPECT_TRUE(fs::exists(dir / "benchmark" / "results.md"));
+  EXPECT_FALSE(fs::exists(dir / "benchmark" / "results_partial.md"));
+  EXPECT_FALSE(fs::exists(dir / "benchmark" / "results_partial.csv"));
+}
+
+TEST(AppProgress, BenchmarkQuickPresetRunsNearSweepsIntoItsOwnFolder) {
+  const fs::path dir = hrgbd::test::tempDir("progress_quick");
+  // without --quick: near and far, two motions (4 sequences); the preset keeps the near sweep
+  std::ofstream(dir / "b.ini") << "[Benchmark]\nmethods = rgb_only\nsim_scenes = texture\n"
+                               << "sim_far = true\nsim_motions = sweep loop\nsim_frames = 3\n"
+                               << "real_sequences =\n";
+  const auto r =
+      runApp("rgbd-benchmark", "-q --quick --methods rgb_only -c " + (dir / "b.ini").string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(hasLine(r.out, "run 1 of 1: sim/texture_near/sweep +rgb_only .*")) << r.out;
+  EXPECT_TRUE(fs::exists(dir / "benchmark_quick" / "results.md"));
+  EXPECT_FALSE(fs::exists(dir / "benchmark"));
 }
