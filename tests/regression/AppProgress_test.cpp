@@ -1,6 +1,7 @@
 // What the apps print while they work, through the real binaries: the steps after the last frame
 // each on a line of its own (on a terminal and in a log), the benchmark's run count and its
-// partial results when interrupted. No timing is asserted: only that times are there.
+// partial results when interrupted, the vocabulary's stages and the INI lines that use it. No
+// timing is asserted: only that times are there.
 #include <signal.h>
 
 #include <filesystem>
@@ -143,4 +144,32 @@ TEST(AppProgress, BenchmarkQuickPresetRunsNearSweepsIntoItsOwnFolder) {
   EXPECT_TRUE(hasLine(r.out, "run 1 of 1: sim/texture_near/sweep +rgb_only .*")) << r.out;
   EXPECT_TRUE(fs::exists(dir / "benchmark_quick" / "results.md"));
   EXPECT_FALSE(fs::exists(dir / "benchmark"));
+}
+
+// ---- rgbd-vocabulary ---------------------------------------------------------------------------
+
+TEST(AppProgress, VocabularyShowsItsStagesAndTheIniLinesThatUseIt) {
+  const fs::path dir = hrgbd::test::tempDir("progress_vocabulary");
+  const auto vocabulary = (dir / "v.txt").string();
+  // two places: the desk and a textured wall
+  auto r = runApp("rgbd-simulate", "-q --scene texture -n 3 --tum " + (dir / "wall").string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  const fs::path here = fs::current_path();
+  fs::current_path(dir);  // a relative output: the INI line gives it in full
+  r = runApp("rgbd-vocabulary", "--words 500 --every 1 -o v.txt wall " + kDesk);
+  fs::current_path(here);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(hasLine(r.err, "seeding: 500 words in .*")) << r.err;
+  EXPECT_TRUE(hasLine(r.err, "k-majority: [0-9]+ rounds in .*")) << r.err;
+  const auto ini = r.out.find("[Slam]\nvocabulary = " + vocabulary + "\n");
+  ASSERT_NE(ini, std::string::npos) << r.out;
+  // the lines as printed, in an INI file, give the SLAM mode this vocabulary
+  std::ofstream(dir / "c.ini") << r.out.substr(ini);
+  r = runApp("hybrid-rgbd-odometry", "-q --slam -n 5 -c " + (dir / "c.ini").string() + " -i " +
+                                         kDesk + " -t " + (dir / "t.txt").string());
+  EXPECT_EQ(r.code, 0) << r.err;
+  fs::remove(vocabulary);
+  r = runApp("hybrid-rgbd-odometry", "-q --slam -n 5 -c " + (dir / "c.ini").string() + " -i " +
+                                         kDesk + " -t " + (dir / "t.txt").string());
+  EXPECT_NE(r.code, 0) << "the INI's vocabulary is the one read";
 }
