@@ -1,7 +1,7 @@
 // What the apps print while they work, through the real binaries: the steps after the last frame
 // each on a line of its own (on a terminal and in a log), the benchmark's run count and its
-// partial results when interrupted, the vocabulary's stages and the INI lines that use it. No
-// timing is asserted: only that times are there.
+// partial results when interrupted, the vocabulary's stages and the INI lines that use it, the
+// simulator's scene and files. No timing is asserted: only that times are there.
 #include <signal.h>
 
 #include <filesystem>
@@ -146,7 +146,7 @@ TEST(AppProgress, BenchmarkQuickPresetRunsNearSweepsIntoItsOwnFolder) {
   EXPECT_FALSE(fs::exists(dir / "benchmark"));
 }
 
-// ---- rgbd-vocabulary ---------------------------------------------------------------------------
+// ---- rgbd-vocabulary and rgbd-simulate ---------------------------------------------------------
 
 TEST(AppProgress, VocabularyShowsItsStagesAndTheIniLinesThatUseIt) {
   const fs::path dir = hrgbd::test::tempDir("progress_vocabulary");
@@ -172,4 +172,23 @@ TEST(AppProgress, VocabularyShowsItsStagesAndTheIniLinesThatUseIt) {
   r = runApp("hybrid-rgbd-odometry", "-q --slam -n 5 -c " + (dir / "c.ini").string() + " -i " +
                                          kDesk + " -t " + (dir / "t.txt").string());
   EXPECT_NE(r.code, 0) << "the INI's vocabulary is the one read";
+}
+
+TEST(AppProgress, SimulatorNamesTheSceneAsAskedAndTheFilesItWrote) {
+  const fs::path dir = hrgbd::test::tempDir("progress_simulate");
+  const auto rawlog = (dir / "d.rawlog").string(), tum = (dir / "seq").string();
+  const auto r =
+      runApp("rgbd-simulate", "-q --scene desk -n 2 -o " + rawlog + " --images png --tum " + tum);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(hasLine(r.out,
+                      "rendered 2 frames of scene desk \\(near, ~1 m\\), median "
+                      "[0-9]+\\.[0-9] ms/frame \\([0-9]+\\.[0-9] frames/s\\)"))
+      << r.out;
+  for (const auto& f :
+       {rawlog, (dir / "d_groundtruth.txt").string(), (dir / "d_Images").string()}) {
+    EXPECT_TRUE(hasLine(r.out, "written: " + f + "/?")) << f << "\n" << r.out;
+    EXPECT_TRUE(fs::exists(f)) << f;
+  }
+  EXPECT_TRUE(contains(r.out, "written: " + tum + "/ (TUM folder: ")) << r.out;
+  EXPECT_TRUE(fs::exists(tum + "/rgb.txt"));
 }
