@@ -7,12 +7,18 @@
 #include <ostream>
 #include <sstream>
 
+#include "rgbd_app/AppConfig.h"
 #include "rgbd_baselines/ThreadLimit.h"
 #include "rgbd_core/Interrupt.h"
 #include "rgbd_core/Progress.h"
+#include "rgbd_io/openFrameSource.h"
 
 namespace hrgbd::bench {
 namespace fs = std::filesystem;
+
+void RunClock::expect(const std::string& sequence, std::size_t frames) {
+  if (frames > 0) m_sequence_frames[sequence] = frames;
+}
 
 void RunClock::add(const std::string& sequence, const std::string& method, std::size_t frames,
                    double seconds) {
@@ -91,6 +97,16 @@ void logRun(const BenchRun& run, std::size_t number, std::size_t count, double s
   log << std::endl;  // each line as it comes, even into a pipe
 }
 
+/** [count] frames a run on `seq` plays (at most [Benchmark] max_frames); 0 = not known. */
+std::size_t frameCount(const BenchSequence& seq, const BenchmarkParams& p,
+                       const mrpt::config::CConfigFileBase& cfg) {
+  try {
+    return openFrameSource(seq.input, cfg)->frameCount(static_cast<std::size_t>(p.max_frames));
+  } catch (const std::exception&) {  // the run says what is wrong with the input
+    return 0;
+  }
+}
+
 }  // namespace
 
 std::size_t runCount(const std::vector<BenchSequence>& sequences, const BenchmarkParams& p) {
@@ -117,6 +133,11 @@ void runAll(const std::vector<BenchSequence>& sequences, const BenchmarkParams& 
   }
   const std::size_t count = left.size();
   RunClock clock;
+  // the frames of each sequence, counted before the runs (a real one may run ten times as long
+  // as a simulated one)
+  const auto cfg = loadChecked(config_file);
+  for (const auto& seq : sequences)
+    if (seq.skip_reason.empty()) clock.expect(seq.name, frameCount(seq, p, *cfg));
   std::reverse(left.begin(), left.end());  // the next run at the back
   for (const auto& seq : sequences) {
     if (!seq.skip_reason.empty()) continue;

@@ -14,10 +14,12 @@
 namespace hrgbd::bench {
 
 /** The time left of a benchmark from the runs finished: each method's seconds per frame so far
- * (all methods' before its first run) times the frames of each run left (a sequence's count from
- * its first run; before that the mean over the sequences run). */
+ * (all methods' before its first run) times the frames of each run left (a sequence's count as
+ * expected before the runs or from its first run; else the mean over the sequences known). */
 class RunClock {
  public:
+  /** A run on `sequence` plays `frames` frames (0 = not known). */
+  void expect(const std::string& sequence, std::size_t frames);
   /** A run of `method` on `sequence` over `frames` frames took `seconds`. */
   void add(const std::string& sequence, const std::string& method, std::size_t frames,
            double seconds);
