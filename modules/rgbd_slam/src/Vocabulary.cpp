@@ -112,7 +112,8 @@ Vocabulary Vocabulary::train(const cv::Mat& d, const std::vector<int>& image,
   }
   cv::Mat assigned;
   report("seeding", "words", p.words, p.words);
-  for (int it = 0; it < p.iterations; ++it) {
+  int it = 0;
+  for (; it < p.iterations; ++it) {
     report("k-majority", "rounds", it, p.iterations);
     const cv::Mat idx = nearestWords(d, v.m_words);
     if (!assigned.empty() && cv::countNonZero(idx != assigned) == 0) break;
@@ -141,6 +142,7 @@ Vocabulary Vocabulary::train(const cv::Mat& d, const std::vector<int>& image,
       }
     }
   }
+  report("k-majority", "rounds", it, p.iterations);  // the rounds made: fewer if settled
   // inverse document frequency over the training images
   const cv::Mat idx = nearestWords(d, v.m_words);
   std::map<int, std::set<int>> images_of_word;
