@@ -85,7 +85,7 @@ BenchRun runOne(const BenchSequence& seq, const std::string& method, const std::
 void logRun(const BenchRun& run, std::size_t number, std::size_t count, double seconds_left,
             std::ostream& log) {
   log << "run " << number << " of " << count << ": " << std::left << std::setw(36) << run.sequence
-      << std::setw(16) << run.method << std::right;
+      << " " << std::setw(16) << run.method << std::right;
   if (!run.error.empty())
     log << "error: " << run.error;
   else
