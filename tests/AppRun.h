@@ -1,17 +1,23 @@
 #pragma once
 // Running the apps as the user runs them (tests/regression/App*_test.cpp).
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "TestData.h"
+
+extern char** environ;
 
 namespace hrgbd::test {
 
@@ -86,6 +92,67 @@ inline std::vector<std::string> dataLines(const std::string& text) {
   for (std::string l; std::getline(in, l);)
     if (!l.empty() && l[0] != '#') out.push_back(l);
   return out;
+}
+
+/** A long input made fast, at `dir`: three simulated frames listed 3,000 times, 1/30 s apart. */
+inline std::string makeLongTumFolder(const std::filesystem::path& dir) {
+  const auto tum = makeTumFolder(dir);
+  for (const auto* list : {"rgb.txt", "depth.txt"}) {
+    const auto lines = dataLines(slurp(dir / list));
+    std::ofstream out(dir / list);
+    for (int k = 0; k < 3000; ++k)
+      out << std::fixed << 1.0 + k / 30.0 << lines[k % 3].substr(lines[k % 3].find(' ')) << "\n";
+  }
+  return tum;
+}
+
+/** The path of app `name` in <build>/apps. */
+inline std::string app(const std::string& name) {
+  return std::string(HRGBD_BINARY_DIR) + "/apps/" + name;
+}
+
+/** Starts `argv` with stdout and stderr to files in `dir`; returns its process id. */
+inline pid_t spawn(const std::vector<std::string>& argv, const std::filesystem::path& dir) {
+  posix_spawn_file_actions_t io;
+  posix_spawn_file_actions_init(&io);
+  posix_spawn_file_actions_addopen(&io, 0, "/dev/null", O_RDONLY, 0);
+  posix_spawn_file_actions_addopen(&io, 1, (dir / "out").c_str(), O_WRONLY | O_CREAT | O_TRUNC,
+                                   0644);
+  posix_spawn_file_actions_addopen(&io, 2, (dir / "err").c_str(), O_WRONLY | O_CREAT | O_TRUNC,
+                                   0644);
+  std::vector<char*> args;
+  for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+  args.push_back(nullptr);
+  pid_t pid = -1;
+  EXPECT_EQ(posix_spawn(&pid, args[0], &io, nullptr, args.data(), environ), 0);
+  posix_spawn_file_actions_destroy(&io);
+  return pid;
+}
+
+/** Waits (at most ~60 s) until `ready()` holds or the process has ended; true if it holds. */
+template <class F>
+inline bool waitFor(pid_t pid, F ready) {
+  for (int k = 0; k < 6000; ++k) {
+    if (ready()) return true;
+    if (waitpid(pid, nullptr, WNOHANG) == pid) return false;
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  return false;
+}
+
+/** The process catches SIGINT: its handler is installed (the signal would end it otherwise). */
+inline bool catchesSigint(pid_t pid) {
+  std::ifstream status("/proc/" + std::to_string(pid) + "/status");
+  for (std::string line; std::getline(status, line);)
+    if (line.rfind("SigCgt:", 0) == 0) return std::stoull(line.substr(7), nullptr, 16) & 0x2;
+  return false;
+}
+
+/** The exit code of `pid` (-1 if a signal ended it). */
+inline int exitCode(pid_t pid) {
+  int status = 0;
+  waitpid(pid, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
 }  // namespace hrgbd::test

@@ -2,6 +2,7 @@
 #include <mrpt/config/CConfigFileMemory.h>
 #include <unistd.h>
 
+#include <iomanip>
 #include <iostream>
 #include <sstream>
 
@@ -39,11 +40,23 @@ std::string iniText(const hrgbd::sim::SimParams& p) {
   return out.getContent();
 }
 
-/** One line: what was rendered and how fast. */
-std::string summary(const hrgbd::sim::SimParams& p, const hrgbd::sim::SimResult& r) {
+/** What was rendered, how fast, and the files written (a TUM folder as one). */
+std::string summary(const hrgbd::sim::SimParams& p, const hrgbd::sim::SimResult& r,
+                    const hrgbd::sim::SimOutputs& outputs) {
   std::ostringstream s;
-  s << "rendered " << r.frames << " frames of " << p.scene << (p.far ? "_far" : "_near")
-    << ", median " << r.ms_per_frame << " ms/frame (" << 1000.0 / r.ms_per_frame << " fps)\n";
+  s << "rendered " << r.frames << " frames of scene " << p.scene
+    << (p.far ? " (far, ~2 m)" : " (near, ~1 m)") << ", median " << std::fixed
+    << std::setprecision(1) << r.ms_per_frame << " ms/frame (" << 1000.0 / r.ms_per_frame
+    << " frames/s)\n";
+  const auto in_tum = [&](const std::string& path) {
+    return !outputs.tum_folder.empty() && path.rfind(outputs.tum_folder + "/", 0) == 0;
+  };
+  for (const auto& f : hrgbd::sim::writtenFiles(outputs))
+    if (!f.path.empty() && !in_tum(f.path))
+      s << "written: " << f.path << (f.folder ? "/" : "") << "\n";
+  if (!outputs.tum_folder.empty())
+    s << "written: " << outputs.tum_folder
+      << "/ (TUM folder: rgb/, depth/, rgb.txt, depth.txt, groundtruth.txt, calibration.txt)\n";
   return s.str();
 }
 
@@ -116,7 +129,7 @@ int main(int argc, char** argv) {
     if (!quiet.getValue()) progress.finish();
     // a rawlog or recording on stdout: the summary goes to stderr, not into it
     const bool on_stdout = hrgbd::writesStandardOutput({rawlog.getValue(), oni.getValue()});
-    (on_stdout ? std::cerr : std::cout) << summary(p, r);
+    (on_stdout ? std::cerr : std::cout) << summary(p, r, outputs);
     for (const auto& o : {rawlog.getValue(), oni.getValue()})
       if (!o.empty() && hrgbd::groundTruthOutputFor(o).empty())
         std::cerr << "rgbd-simulate: note: the ground truth is not written: '" << o

@@ -4,6 +4,7 @@
 #include <mrpt/config/CConfigFileMemory.h>
 #include <unistd.h>
 
+#include <filesystem>
 #include <iostream>
 #include <stdexcept>
 #include <vector>
@@ -80,8 +81,20 @@ int main(int argc, char** argv) {
                                " words: give more frames (--every, inputs) or fewer --words");
     hrgbd::VocabularyTraining t;
     t.words = words.getValue();
+    log << "clustering into " << t.words << " words" << std::endl;
+    hrgbd::StagedProgress stages(std::cerr, isatty(STDERR_FILENO));
+    t.progress = [&](const std::string& stage, const std::string& unit, std::size_t done,
+                     std::size_t total) {
+      hrgbd::checkInterrupt();
+      if (!quiet.getValue()) stages.update(stage, unit, done, total);
+    };
     hrgbd::Vocabulary::train(descriptors, image, t).save(file.writePath());
+    stages.finish();
     file.commit();
     log << "wrote " << t.words << " words to " << out.getValue() << "\n";
+    if (&log == &std::cout)  // a file (the path is absolute: an INI's are relative to it)
+      log << "to use it, put these lines in the INI file (--config) of hybrid-rgbd-odometry or "
+             "rgbd-live:\n[Slam]\nvocabulary = "
+          << std::filesystem::absolute(out.getValue()).lexically_normal().string() << "\n";
   });
 }

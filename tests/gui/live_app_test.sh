@@ -22,6 +22,10 @@ INNER
 xvfb-run -a -s "-screen 0 1280x800x24" bash "$out/inner.sh"
 cat "$out/live.log"
 grep -q '^finished: 20 frames' "$out/live.log" || { echo "FAIL: the app did not process 20 frames"; exit 1; }
+# Its log in a file: whole lines, no carriage returns; the SLAM mode's last steps timed.
+if grep -q $'\r' "$out/live.log"; then echo "FAIL: carriage returns in the log file"; exit 1; fi
+grep -Eq '^SLAM: last loop searches and final optimisation \.\.\. [0-9.]+ s$' "$out/live.log" ||
+  { echo "FAIL: no timed line for the SLAM mode's last steps"; exit 1; }
 # The 3D view right of the image inset and below the text: a drawn coloured map has thousands
 # of colours (measured 5,163); the empty grid has about 150.
 view=$(convert "$out/screenshot.png" -crop 690x400+330+70 +repage -format "%k" info:)

@@ -17,66 +17,24 @@
 
 #include "AppRun.h"
 
-extern char** environ;
-
 namespace {
 
 namespace fs = std::filesystem;
+using hrgbd::test::app;
+using hrgbd::test::catchesSigint;
 using hrgbd::test::dataLines;
+using hrgbd::test::exitCode;
 using hrgbd::test::expectFailure;
 using hrgbd::test::expectRefused;
+using hrgbd::test::makeLongTumFolder;
 using hrgbd::test::makeTumFolder;
 using hrgbd::test::runApp;
 using hrgbd::test::slurp;
+using hrgbd::test::spawn;
+using hrgbd::test::waitFor;
 
 const std::string kOdometry = "hybrid-rgbd-odometry";
 const std::string kDesk = std::string(HRGBD_SOURCE_DIR) + "/rawlogs/desk_near.rawlog";
-
-std::string app(const std::string& name) { return std::string(HRGBD_BINARY_DIR) + "/apps/" + name; }
-
-/** Starts `argv` with stdout and stderr to files in `dir`; returns its process id. */
-pid_t spawn(const std::vector<std::string>& argv, const fs::path& dir) {
-  posix_spawn_file_actions_t io;
-  posix_spawn_file_actions_init(&io);
-  posix_spawn_file_actions_addopen(&io, 0, "/dev/null", O_RDONLY, 0);
-  posix_spawn_file_actions_addopen(&io, 1, (dir / "out").c_str(), O_WRONLY | O_CREAT | O_TRUNC,
-                                   0644);
-  posix_spawn_file_actions_addopen(&io, 2, (dir / "err").c_str(), O_WRONLY | O_CREAT | O_TRUNC,
-                                   0644);
-  std::vector<char*> args;
-  for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
-  args.push_back(nullptr);
-  pid_t pid = -1;
-  EXPECT_EQ(posix_spawn(&pid, args[0], &io, nullptr, args.data(), environ), 0);
-  posix_spawn_file_actions_destroy(&io);
-  return pid;
-}
-
-/** Waits (at most ~60 s) until `ready()` holds or the process has ended; true if it holds. */
-template <class F>
-bool waitFor(pid_t pid, F ready) {
-  for (int k = 0; k < 6000; ++k) {
-    if (ready()) return true;
-    if (waitpid(pid, nullptr, WNOHANG) == pid) return false;
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
-  }
-  return false;
-}
-
-/** The process catches SIGINT: its handler is installed (the signal would end it otherwise). */
-bool catchesSigint(pid_t pid) {
-  std::ifstream status("/proc/" + std::to_string(pid) + "/status");
-  for (std::string line; std::getline(status, line);)
-    if (line.rfind("SigCgt:", 0) == 0) return std::stoull(line.substr(7), nullptr, 16) & 0x2;
-  return false;
-}
-
-/** The exit code of `pid` (-1 if a signal ended it). */
-int exitCode(pid_t pid) {
-  int status = 0;
-  waitpid(pid, &status, 0);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
 
 /** Files in `dir` (recursively) whose name ends in ".tmp". */
 std::vector<std::string> temporaries(const fs::path& dir) {
@@ -285,14 +243,7 @@ TEST(AppSpecialFiles, SigtermEndsAPlaybackWithoutPartialOutputs) {
   const fs::path work = dir / "work";
   fs::create_directories(work);
   const auto t = (work / "t.txt").string(), csv = (work / "f.csv").string();
-  // A long input made fast: three simulated frames listed 3,000 times, 1/30 s apart.
-  const auto tum = makeTumFolder(dir / "seq");
-  for (const auto* list : {"rgb.txt", "depth.txt"}) {
-    const auto lines = dataLines(slurp(dir / "seq" / list));
-    std::ofstream out(dir / "seq" / list);
-    for (int k = 0; k < 3000; ++k)
-      out << std::fixed << 1.0 + k / 30.0 << lines[k % 3].substr(lines[k % 3].find(' ')) << "\n";
-  }
+  const auto tum = makeLongTumFolder(dir / "seq");
   const auto pid =
       spawn({app(kOdometry), "-q", "--no-slam", "-i", tum, "-t", t, "--csv", csv}, dir);
   const bool started = waitFor(pid, [&] { return temporaries(work).size() == 2; });

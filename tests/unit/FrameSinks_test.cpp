@@ -46,6 +46,13 @@ std::size_t files(const std::string& dir) {
 constexpr auto kOk = hrgbd::FrameResult::Status::Ok;
 constexpr auto kLost = hrgbd::FrameResult::Status::TooFewMatches;
 
+/** `log` is the one line of a timed step (rgbd_core/Progress.h): `what`, " ... ", its time. */
+void expectStep(const std::string& log, const std::string& what) {
+  EXPECT_EQ(log.rfind(what + " ... ", 0), 0u) << log;
+  EXPECT_EQ(std::count(log.begin(), log.end(), '\n'), 1) << log;
+  EXPECT_EQ(log.substr(log.size() - 3), " s\n") << log;
+}
+
 }  // namespace
 
 TEST(TrajectorySink, WritesOneTumLinePerFrameWithTheFramesExactTimeStamp) {
@@ -64,7 +71,7 @@ TEST(TrajectorySink, WritesOneTumLinePerFrameWithTheFramesExactTimeStamp) {
   EXPECT_TRUE(sink.trajectory().empty());
   std::ostringstream log;
   sink.finish(log);
-  EXPECT_EQ(log.str(), "trajectory: " + dir + "/t.txt\n");
+  expectStep(log.str(), "trajectory: " + dir + "/t.txt");
   const auto text = lines(dir + "/t.txt");  // the file keeps what it has
   ASSERT_EQ(text.size(), 3u);
   EXPECT_EQ(text[0], "# comment");
@@ -131,7 +138,7 @@ TEST(CsvSink, OneRowPerFrameWithTheHeadersColumns) {
   sink.add(stamped(*src.next(), "1.5"), r);
   std::ostringstream log;
   sink.finish(log);
-  EXPECT_EQ(log.str(), "CSV: " + dir + "/f.csv\n");
+  expectStep(log.str(), "CSV: " + dir + "/f.csv");
   const auto text = lines(dir + "/f.csv");
   ASSERT_EQ(text.size(), 2u);
   const auto commas = [](const std::string& s) { return std::count(s.begin(), s.end(), ','); };
@@ -157,7 +164,7 @@ TEST(ColouredMapSink, OnlyRegisteredFramesEnterTheMapEveryFrameThePath) {
   EXPECT_NEAR(sink.path()[1].y(), -0.1, 1e-9);
   std::ostringstream log;
   sink.finish(log);
-  EXPECT_EQ(log.str(), "map (PLY, " + std::to_string(points) + " points): " + dir + "/m.ply\n");
+  expectStep(log.str(), "map (PLY, " + std::to_string(points) + " points): " + dir + "/m.ply");
   const auto ply = lines(dir + "/m.ply");
   EXPECT_NE(std::find(ply.begin(), ply.end(), "element vertex " + std::to_string(points)),
             ply.end());

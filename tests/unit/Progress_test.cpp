@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -119,4 +120,54 @@ TEST(Progress, InAFileWithoutTotalALineEveryTenSeconds) {
   ASSERT_EQ(l.size(), 2u) << f.out.str();
   EXPECT_EQ(l[0], "80 images, 8.0 images/s");
   EXPECT_EQ(l[1], "160 images, 8.0 images/s");
+}
+
+TEST(Progress, TimeLeftSaysWhatFollowsTheLastItem) {
+  Fixture f;
+  hrgbd::ProgressParams p;
+  p.total = 200;
+  p.after = "final steps";
+  const auto progress = f.make(p);
+  EXPECT_EQ(progress.text(50, 10), "50/200 frames (25%), 5.0 frames/s, 30 s left + final steps");
+  EXPECT_EQ(progress.text(200, 40), "200/200 frames (100%), 5.0 frames/s");
+}
+
+TEST(StagedProgress, OneLineAStageEachFinishedWhenTheNextBegins) {
+  std::ostringstream out;
+  double now = 0;
+  hrgbd::StagedProgress stages(out, false, [&] { return now; });
+  stages.update("seeding", "words", 1, 4);
+  now = 2;
+  stages.update("seeding", "words", 4, 4);
+  stages.update("k-majority", "rounds", 1, 15);
+  now = 5;
+  stages.update("k-majority", "rounds", 3, 15);
+  stages.finish();
+  // in a file: no line in the first second of a stage, the final line of each
+  const auto l = lines(out.str());
+  ASSERT_EQ(l.size(), 3u) << out.str();
+  EXPECT_EQ(l[0], "seeding: 4 words in 2.0 s, 2.0 words/s");
+  EXPECT_EQ(l[1], "k-majority: 3/15 rounds (20%), 1.0 rounds/s, 12 s left");
+  EXPECT_EQ(l[2], "k-majority: 3 rounds in 3.0 s, 1.0 rounds/s");
+}
+
+TEST(TimedStep, LineBeginsBeforeTheStepAndEndsWithItsTime) {
+  std::ostringstream out;
+  double now = 10;
+  std::string seen_during;
+  hrgbd::timedStep(
+      out, "writing the map",
+      [&] {
+        seen_during = out.str();
+        now += 1.25;
+      },
+      [&] { return now; });
+  EXPECT_EQ(seen_during, "writing the map ... ");
+  EXPECT_EQ(out.str(), "writing the map ... 1.2 s\n");
+  out.str("");
+  EXPECT_THROW(
+      hrgbd::timedStep(
+          out, "writing x", [] { throw std::runtime_error("disk full"); }, [&] { return now; }),
+      std::runtime_error);
+  EXPECT_EQ(out.str(), "writing x ... failed\n");
 }

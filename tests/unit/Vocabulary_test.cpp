@@ -6,6 +6,8 @@
 
 #include <fstream>
 #include <random>
+#include <stdexcept>
+#include <string>
 
 #include "TestData.h"
 
@@ -63,6 +65,32 @@ TEST(Vocabulary, KMajorityRecoversPlantedClusters) {
   }
   std::sort(word_of_cluster.begin(), word_of_cluster.end());
   EXPECT_EQ(std::unique(word_of_cluster.begin(), word_of_cluster.end()), word_of_cluster.end());
+}
+
+TEST(Vocabulary, TrainingReportsItsStagesAndStopsWhenTheReportThrows) {
+  std::vector<int> cluster_of;
+  const cv::Mat d = planted(8, 60, 20, cluster_of, 7);
+  std::vector<int> image(cluster_of.size());
+  for (std::size_t i = 0; i < image.size(); ++i) image[i] = cluster_of[i] / 2;
+  hrgbd::VocabularyTraining t;
+  t.words = 8;
+  std::vector<std::string> seen;
+  t.progress = [&](const std::string& stage, const std::string& unit, std::size_t done,
+                   std::size_t total) {
+    seen.push_back(stage + " " + unit + " " + std::to_string(done) + "/" + std::to_string(total));
+  };
+  Vocabulary::train(d, image, t);
+  ASSERT_GE(seen.size(), 10u);
+  EXPECT_EQ(seen[0], "seeding words 0/8");
+  EXPECT_EQ(seen[8], "seeding words 8/8");
+  EXPECT_EQ(seen[9], "k-majority rounds 0/15");
+  // planted clusters settle before round 15: the round that finds it so is not counted as made
+  EXPECT_EQ(seen.back(), seen[seen.size() - 2]);
+  EXPECT_NE(seen.back(), "k-majority rounds 15/15");
+  t.progress = [](const std::string& stage, const std::string&, std::size_t, std::size_t) {
+    if (stage == "k-majority") throw std::runtime_error("stopped");
+  };
+  EXPECT_THROW(Vocabulary::train(d, image, t), std::runtime_error);
 }
 
 TEST(Vocabulary, DataThatCannotMakeAUsefulVocabularyIsRefused) {

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "rgbd_core/Interrupt.h"
+#include "rgbd_core/Progress.h"
 
 namespace hrgbd {
 
@@ -46,10 +47,13 @@ std::size_t FrameLoop::run() {
 void FrameLoop::finish(std::ostream& log) {
   checkInterrupt();
   if (m_slam) {
-    m_slam->flush();
-    const auto poses = m_slam->poses();
-    for (auto* sink : m_sinks) sink->correct(poses);
+    // each a line with its time: on a long run these take seconds after the last frame
+    timedStep(log, "SLAM: last loop searches and final optimisation", [&] { m_slam->flush(); });
     log << toText(m_slam->stats());
+    timedStep(log, "SLAM: outputs moved to the optimised poses", [&] {
+      const auto poses = m_slam->poses();
+      for (auto* sink : m_sinks) sink->correct(poses);
+    });
   }
   for (auto* sink : m_sinks) sink->finish(log);
 }

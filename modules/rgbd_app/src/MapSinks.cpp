@@ -12,6 +12,7 @@
 
 #include "rgbd_core/GzOutput.h"
 #include "rgbd_core/PoseGap.h"
+#include "rgbd_core/Progress.h"
 #include "rgbd_core/Trajectory.h"
 #include "rgbd_odometry/RigidFit.h"
 
@@ -52,10 +53,12 @@ void ColouredMapSink::correct(const SlamPoses& slam) {
 }
 
 void ColouredMapSink::finish(std::ostream& log) {
-  save(m_files);
   if (!m_files.ply.empty())
-    log << "map (PLY, " << m_map.size() << " points): " << m_files.ply << "\n";
-  if (!m_files.scene.empty()) log << "map (.3Dscene): " << m_files.scene << "\n";
+    timedStep(log, "map (PLY, " + std::to_string(m_map.size()) + " points): " + m_files.ply, [&] {
+      save({m_files.ply, ""});
+    });
+  if (!m_files.scene.empty())
+    timedStep(log, "map (.3Dscene): " + m_files.scene, [&] { save({"", m_files.scene}); });
 }
 
 void ColouredMapSink::reset() {
@@ -88,24 +91,26 @@ void PosedRawlogSink::finish(std::ostream& log) {
   const std::size_t written = m_writer->written();
   if (!m_corrected.empty() && m_corrected.size() != written)
     throw std::logic_error("PosedRawlogSink: optimised poses do not match the frames");
-  m_writer->close();
-  m_writer.reset();
   if (m_corrected.empty()) {
-    log << "rawlog with poses: " << m_path << "\n";
+    timedStep(log, "rawlog with poses: " + m_path, [&] { m_writer->close(); });
+    m_writer.reset();
     return;
   }
-  // Read back object by object and written again with the optimised poses; the external image
-  // names are kept as they are (MRPT loads external images lazily, and only on demand).
-  mrpt::io::CFileGZInputStream in(m_path);
-  auto reader = mrpt::serialization::archiveFrom(in);
-  RawlogWriter out(m_path);  // inline: objects as they are; moved onto m_path by close()
-  for (std::size_t i = 0; i < written; ++i) {
-    auto obs = reader.ReadObject<mrpt::obs::CObservation3DRangeScan>();
-    obs->sensorPose = opticalToMrptWorld(m_corrected[i]);
-    out.write(*obs);
-  }
-  out.close();
-  log << "rawlog with poses (SLAM, optimised): " << m_path << "\n";
+  timedStep(log, "rawlog with poses (SLAM, optimised): " + m_path, [&] {
+    m_writer->close();
+    m_writer.reset();
+    // Read back object by object and written again with the optimised poses; the external
+    // image names are kept as they are (MRPT loads external images lazily, and on demand only).
+    mrpt::io::CFileGZInputStream in(m_path);
+    auto reader = mrpt::serialization::archiveFrom(in);
+    RawlogWriter out(m_path);  // inline: objects as they are; moved onto m_path by close()
+    for (std::size_t i = 0; i < written; ++i) {
+      auto obs = reader.ReadObject<mrpt::obs::CObservation3DRangeScan>();
+      obs->sensorPose = opticalToMrptWorld(m_corrected[i]);
+      out.write(*obs);
+    }
+    out.close();
+  });
 }
 
 void SimplemapSink::add(const mrpt::obs::CObservation3DRangeScan& obs, const FrameResult& r) {
@@ -133,8 +138,7 @@ void SimplemapSink::correct(const SlamPoses& slam) {
 }
 
 void SimplemapSink::finish(std::ostream& log) {
-  saveCompressed(m_simplemap, m_path, "simplemap");
-  log << "simplemap: " << m_path << "\n";
+  timedStep(log, "simplemap: " + m_path, [&] { saveCompressed(m_simplemap, m_path, "simplemap"); });
 }
 
 }  // namespace hrgbd

@@ -11,6 +11,7 @@
 #include "rgbd_core/Config.h"
 #include "rgbd_core/JobPaths.h"
 #include "rgbd_core/OutputFile.h"
+#include "rgbd_core/Progress.h"
 #include "rgbd_eval/EvalPlot.h"
 #include "rgbd_eval/Evaluate.h"
 #include "rgbd_io/Grabber.h"
@@ -182,10 +183,8 @@ void evaluate(const FrameSource& source, const Trajectory& estimate, const std::
         << std::fixed << std::setprecision(4) << sum.loop_check.largest_translation << " m, "
         << std::setprecision(2) << sum.loop_check.largest_rotation << " deg\n";
   }
-  if (!plot.empty()) {
-    plotEvaluation(sum.eval, plot, title);
-    log << "plot: " << plot << "\n";
-  }
+  if (!plot.empty())
+    timedStep(log, "plot: " + plot, [&] { plotEvaluation(sum.eval, plot, title); });
 }
 
 }  // namespace
@@ -221,6 +220,10 @@ PlaybackSummary runPlayback(const PlaybackOptions& opt, std::ostream& log) {
   const auto max_frames = opt.max_frames > 0 ? static_cast<std::size_t>(opt.max_frames) : 0;
   ProgressParams progress;  // frameProgress() may count a rawlog's frames: only when shown
   if (opt.progress) progress = frameProgress(*source, max_frames, opt.progress_label);
+  // what runs after the last frame and may take seconds: the time left does not include it
+  const auto& o = job.outputs;
+  if (job.slam.enabled || !o.map_ply.empty() || !o.map_scene.empty() || !o.simplemap.empty())
+    progress.after = "final steps";
   // a sensor, or a recording played as one, through the sensor's grabber: it drops the frames
   // that arrive while the tracker is behind
   std::unique_ptr<Grabber> grabber;
@@ -238,11 +241,12 @@ PlaybackSummary runPlayback(const PlaybackOptions& opt, std::ostream& log) {
     loop.setSlam(std::make_unique<KeyframeSlam>(job.slam, params, grabber != nullptr));
   loop.run();
   if (grabber) grabber->stop();  // the count of dropped frames ends with the run
+  // the progress line ends before the final steps print theirs
+  if (sinks.progress) sinks.progress->finish(log);
   loop.finish(log);
-  if (!job.graph.empty()) {
-    loop.slam()->graph().save(job.graph);
-    log << "pose graph (MRPT text format): " << job.graph << "\n";
-  }
+  if (!job.graph.empty())
+    timedStep(log, "pose graph (MRPT text format): " + job.graph,
+              [&] { loop.slam()->graph().save(job.graph); });
 
   auto sum = std::move(sinks.summary->summary());
   if (grabber) {

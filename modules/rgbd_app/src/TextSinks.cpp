@@ -27,12 +27,13 @@ void TrajectorySink::add(const mrpt::obs::CObservation3DRangeScan& obs, const Fr
 
 void TrajectorySink::finish(std::ostream& log) {
   if (!m_file) return;
-  if (!m_streamed)
-    for (std::size_t i = 0; i < m_trajectory.size(); ++i)
-      writeTumLine(m_file->stream(), m_times[i], m_trajectory[i].pose);
-  m_file->commit();
-  log << (m_corrected ? "trajectory (SLAM, optimised): " : "trajectory: ") << m_file->path()
-      << "\n";
+  timedStep(log, (m_corrected ? "trajectory (SLAM, optimised): " : "trajectory: ") + m_file->path(),
+            [&] {
+              if (!m_streamed)
+                for (std::size_t i = 0; i < m_trajectory.size(); ++i)
+                  writeTumLine(m_file->stream(), m_times[i], m_trajectory[i].pose);
+              m_file->commit();
+            });
   m_file.reset();
 }
 
@@ -79,8 +80,7 @@ void CsvSink::add(const mrpt::obs::CObservation3DRangeScan& obs, const FrameResu
 }
 
 void CsvSink::finish(std::ostream& log) {
-  m_file.commit();
-  log << "CSV: " << m_file.path() << "\n";
+  timedStep(log, "CSV: " + m_file.path(), [&] { m_file.commit(); });
 }
 
 void ProgressSink::add(const mrpt::obs::CObservation3DRangeScan&, const FrameResult& r) {

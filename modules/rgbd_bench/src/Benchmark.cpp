@@ -13,8 +13,8 @@
 #include <sstream>
 #include <thread>
 
+#include "Runs.h"
 #include "rgbd_app/AppConfig.h"
-#include "rgbd_baselines/ThreadLimit.h"
 #include "rgbd_core/Config.h"
 #include "rgbd_core/Interrupt.h"
 #include "rgbd_core/JobPaths.h"
@@ -142,76 +142,6 @@ BenchmarkParams loadBenchmarkParams(const std::string& config_file,
   return p;
 }
 
-/** One sequence x method through runPlayback(), writing <traj_dir>/<sequence>__<method>.txt
- * and .csv. An error is recorded in the run, not thrown. */
-BenchRun runOne(const BenchSequence& seq, const std::string& method, const std::string& config_file,
-                const fs::path& traj_dir, const BenchmarkParams& p, bool progress) {
-  BenchRun run{seq.name, method, {}, ""};
-  auto stem = seq.name + "__" + method;
-  std::replace(stem.begin(), stem.end(), '/', '_');
-  PlaybackOptions opt;
-  opt.config = config_file;
-  opt.input = seq.input;
-  opt.trajectory = (traj_dir / (stem + ".txt")).string();
-  opt.csv = (traj_dir / (stem + ".csv")).string();
-  opt.method = method;
-  if (method == "hybrid_slam") opt.method = "hybrid", opt.slam = true;
-  if (method == "hybrid_odometry") opt.method = "hybrid", opt.no_slam = true;
-  const std::string paper = "_paper";
-  if (method.size() > paper.size() &&
-      method.compare(method.size() - paper.size(), paper.size(), paper) == 0)
-    opt.method = method.substr(0, method.size() - paper.size()), opt.config = p.paper_config;
-  if (method == "hybrid_realtime") opt.method = "hybrid", opt.realtime = true;
-  opt.max_frames = p.max_frames;
-  opt.progress = progress;
-  opt.progress_label = seq.name + " " + method;
-  opt.ini_outputs = false;
-  std::ostringstream playback_log;
-  try {
-    run.summary = runPlayback(opt, playback_log);
-  } catch (const Interrupted&) {
-    throw;  // not this run's error: the benchmark stops
-  } catch (const std::exception& e) {
-    run.error = e.what();
-  }
-  return run;
-}
-
-/** One line per run: registered frames, ATE, time per frame, or the error. */
-void logRun(const BenchRun& run, std::ostream& log) {
-  log << std::left << std::setw(36) << run.sequence << std::setw(16) << run.method << std::right;
-  if (!run.error.empty())
-    log << "error: " << run.error << "\n";
-  else
-    log << std::setw(4) << run.summary.registered << "/" << std::setw(4) << std::left
-        << run.summary.frames << std::right << " registered, ATE "
-        << (run.summary.evaluated ? std::to_string(run.summary.eval.ate_mean_unaligned) : "-")
-        << " m, " << std::fixed << std::setprecision(1) << run.summary.median_ms << " ms/frame\n";
-  log.flush();
-}
-
-/** Every method on every sequence that is not skipped, on one core. */
-std::vector<BenchRun> runAll(const std::vector<BenchSequence>& sequences, const BenchmarkParams& p,
-                             const std::string& config_file, std::ostream& log, bool progress) {
-  // Every method on one core, as the targets are stated (OpenCV and Open3D would use both
-  // otherwise); the caller's setting is restored however this returns.
-  const ThreadLimit one_thread(1);
-  const auto traj_dir = fs::path(p.output_folder) / "trajectories";
-  fs::create_directories(traj_dir);
-  std::vector<BenchRun> runs;
-  for (const auto& seq : sequences) {
-    if (!seq.skip_reason.empty()) {
-      log << seq.name << ": skipped (" << seq.skip_reason << ")\n";
-      continue;
-    }
-    for (const auto& method : p.methods) {
-      runs.push_back(runOne(seq, method, config_file, traj_dir, p, progress));
-      logRun(runs.back(), log);
-    }
-  }
-  return runs;
-}
-
 /** Throws when no run succeeded: there are no results to write (they were written empty, and
  * the benchmark exited 0). Names why: no sequence, every sequence skipped, every run failed. */
 void requireAResult(const std::vector<BenchSequence>& sequences,
@@ -255,8 +185,11 @@ void checkResultPaths(const BenchmarkParams& p, const std::string& config_file,
   };
   for (const auto& r : p.real_sequences) sequence(r, "[Benchmark] real_sequences entry");
   for (const auto& e : extra) sequence(e, "the sequence given on the command line");
-  checkJobPaths(inputs, {{results(p, "results.md"), "[Benchmark] output_folder's results.md"},
-                         {results(p, "results.csv"), "[Benchmark] output_folder's results.csv"}});
+  std::vector<JobPath> outputs;
+  for (const auto* name :
+       {"results.md", "results.csv", "results_partial.md", "results_partial.csv"})
+    outputs.push_back({results(p, name), std::string("[Benchmark] output_folder's ") + name});
+  checkJobPaths(inputs, outputs);
 }
 
 /** One figure per real sequence that ran: every evaluated method against its ground truth. */
@@ -288,7 +221,31 @@ std::vector<BenchFigure> plotRealSequences(const BenchmarkReport& report, const 
   return figures;
 }
 
+/** <output_folder>/<stem>.md and .csv, each in full or not at all; logs their paths. */
+void writeResults(const BenchmarkReport& report, const BenchmarkParams& p, const std::string& stem,
+                  std::ostream& log) {
+  StreamOutput markdown(results(p, stem + ".md"), "benchmark results");
+  markdown.stream() << toMarkdown(report);
+  markdown.commit();
+  StreamOutput csv(results(p, stem + ".csv"), "benchmark results");
+  csv.stream() << toCsv(report);
+  csv.commit();
+  if (report.partial.empty())
+    log << "results: " << markdown.path() << std::endl;
+  else
+    log << "\npartial results (" << report.partial << "): " << markdown.path() << ", " << csv.path()
+        << std::endl;
+}
+
 }  // namespace
+
+std::map<std::string, std::string> quickBenchmark() {
+  return {{"methods", "hybrid opencv_rgbd"},
+          {"sim_far", "false"},
+          {"sim_motions", "sweep"},
+          {"max_frames", "60"},
+          {"output_folder", "benchmark_quick"}};
+}
 
 BenchmarkReport runBenchmark(const std::string& config_file, const std::vector<std::string>& extra,
                              std::ostream& log, bool progress,
@@ -305,18 +262,37 @@ BenchmarkReport runBenchmark(const std::string& config_file, const std::vector<s
   report.machine = machineDescription();
   report.date = today();
   report.sequences = prepareSequences(p, extra, log);
-  report.runs = runAll(report.sequences, p, config_file, log, progress);
+  const auto seconds = [&] {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
+  try {
+    bench::runAll(report.sequences, p, config_file, log, progress, report.runs);
+  } catch (const Interrupted& e) {
+    // the runs finished so far are results too: written under other names, marked partial
+    report.partial = std::string(e.what()) + " after " + std::to_string(report.runs.size()) +
+                     " of " + std::to_string(bench::runCount(report.sequences, p)) + " runs";
+    report.seconds = seconds();
+    if (report.runs.empty()) {
+      log << "\n" << e.what() << " before the first run finished: no results written" << std::endl;
+      throw;
+    }
+    // the tables then hold the sequences that ran (a row of "-" would read as failures)
+    auto ran = report;
+    ran.sequences.clear();
+    for (const auto& seq : report.sequences)
+      if (!seq.skip_reason.empty() ||
+          std::any_of(report.runs.begin(), report.runs.end(),
+                      [&](const BenchRun& r) { return r.sequence == seq.name; }))
+        ran.sequences.push_back(seq);
+    writeResults(ran, p, "results_partial", log);
+    throw;
+  }
   requireAResult(report.sequences, report.runs);
   report.figures = plotRealSequences(report, p, log);
-  report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-
-  StreamOutput markdown(results(p, "results.md"), "benchmark results");
-  markdown.stream() << toMarkdown(report);
-  markdown.commit();
-  StreamOutput csv(results(p, "results.csv"), "benchmark results");
-  csv.stream() << toCsv(report);
-  csv.commit();
-  log << "results: " << markdown.path() << "\n";
+  report.seconds = seconds();
+  writeResults(report, p, "results", log);
+  for (const auto* stale : {"results_partial.md", "results_partial.csv"})  // an earlier one's
+    fs::remove(results(p, stale));
   return report;
 }
 

@@ -152,8 +152,11 @@ std::string targets(const BenchmarkReport& r) {
 
 std::string toMarkdown(const BenchmarkReport& r) {
   std::ostringstream out;
-  out << "# Benchmark results\n\n"
-      << "- machine: " << r.machine << "; every method on one thread\n"
+  out << "# Benchmark results" << (r.partial.empty() ? "" : " (PARTIAL)") << "\n\n";
+  if (!r.partial.empty())
+    out << "**Partial results: " << r.partial
+        << "**; the runs not made are missing from the tables, and there are no figures.\n\n";
+  out << "- machine: " << r.machine << "; every method on one thread\n"
       << "- date: " << r.date << "; configuration: `" << r.config_file << "`; wall time "
       << std::fixed << std::setprecision(0) << r.seconds << " s\n"
       << "- ATE is evaluated against each sequence's ground truth; frames a method cannot "

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <list>
 #include <sstream>
@@ -139,6 +140,9 @@ CommandLine::CommandLine(const std::string& app, const std::string& description,
 CommandLine::~CommandLine() = default;
 
 int CommandLine::run(int argc, const char* const* argv, const std::function<void()>& work) {
+  // Each line of stdout as it comes, into a pipe or file too (a log read while the app runs, or
+  // after it was killed); stderr is unbuffered anyway.
+  std::setvbuf(stdout, nullptr, _IOLBF, BUFSIZ);
   // The app's name, not argv[0]'s path, in the usage text.
   std::vector<const char*> args(argv, argv + argc);
   if (args.empty()) args.push_back(nullptr);

@@ -49,7 +49,9 @@ std::string Progress::text(std::size_t done, double seconds) const {
     const double rate = done / seconds;
     std::snprintf(buf, sizeof buf, ", %.1f %s/s", rate, m_params.unit.c_str());
     line += buf;
-    if (total > done) line += ", " + formatDuration((total - done) / rate) + " left";
+    if (total > done)
+      line += ", " + formatDuration((total - done) / rate) + " left" +
+              (m_params.after.empty() ? "" : " + " + m_params.after);
   }
   if (!m_detail.empty()) line += ", " + m_detail;
   return line;
@@ -103,6 +105,42 @@ void Progress::finish() {
   if (!m_detail.empty()) line += ", " + m_detail;
   write(line);
   if (m_params.terminal) m_out << '\n' << std::flush;
+}
+
+StagedProgress::StagedProgress(std::ostream& out, bool terminal, Progress::Clock clock)
+    : m_out(out), m_terminal(terminal), m_clock(std::move(clock)) {}
+
+void StagedProgress::update(const std::string& stage, const std::string& unit, std::size_t done,
+                            std::size_t total) {
+  if (!m_progress || stage != m_stage) {
+    finish();
+    ProgressParams p;
+    p.label = stage;
+    p.unit = unit;
+    p.total = total;
+    p.terminal = m_terminal;
+    m_progress = std::make_unique<Progress>(m_out, p, m_clock);
+    m_stage = stage;
+  }
+  m_progress->update(done);
+}
+
+void StagedProgress::finish() {
+  if (m_progress) m_progress->finish();
+}
+
+void timedStep(std::ostream& out, const std::string& what, const std::function<void()>& step,
+               const Progress::Clock& clock) {
+  const Progress::Clock now = clock ? clock : Progress::Clock(steadySeconds);
+  out << what << " ... " << std::flush;
+  const double start = now();
+  try {
+    step();
+  } catch (...) {
+    out << "failed\n" << std::flush;
+    throw;
+  }
+  out << formatDuration(now() - start) << "\n" << std::flush;
 }
 
 }  // namespace hrgbd

@@ -89,8 +89,13 @@ Vocabulary Vocabulary::train(const cv::Mat& d, const std::vector<int>& image,
   Vocabulary v;
   v.m_words.create(p.words, kBytes, CV_8U);
   std::vector<double> nearest(static_cast<std::size_t>(d.rows), 1e300);
+  const auto report = [&](const char* stage, const char* unit, int done, int total) {
+    if (p.progress)
+      p.progress(stage, unit, static_cast<std::size_t>(done), static_cast<std::size_t>(total));
+  };
   int pick = any(rng);
   for (int k = 0; k < p.words; ++k) {
+    report("seeding", "words", k, p.words);
     d.row(pick).copyTo(v.m_words.row(k));
     cv::Mat dist;
     cv::batchDistance(d, v.m_words.row(k), dist, CV_32S, cv::noArray(), cv::NORM_HAMMING);
@@ -106,7 +111,10 @@ Vocabulary Vocabulary::train(const cv::Mat& d, const std::vector<int>& image,
     pick = next(rng);
   }
   cv::Mat assigned;
-  for (int it = 0; it < p.iterations; ++it) {
+  report("seeding", "words", p.words, p.words);
+  int it = 0;
+  for (; it < p.iterations; ++it) {
+    report("k-majority", "rounds", it, p.iterations);
     const cv::Mat idx = nearestWords(d, v.m_words);
     if (!assigned.empty() && cv::countNonZero(idx != assigned) == 0) break;
     assigned = idx;
@@ -134,6 +142,7 @@ Vocabulary Vocabulary::train(const cv::Mat& d, const std::vector<int>& image,
       }
     }
   }
+  report("k-majority", "rounds", it, p.iterations);  // the rounds made: fewer if settled
   // inverse document frequency over the training images
   const cv::Mat idx = nearestWords(d, v.m_words);
   std::map<int, std::set<int>> images_of_word;

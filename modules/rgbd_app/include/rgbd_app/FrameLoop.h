@@ -29,7 +29,8 @@ class FrameLoop {
   /** step() until it returns false; returns frames(). Does not finish the sinks. */
   std::size_t run();
   /** SLAM mode: completes the loop search, optimises, hands the poses to every sink (correct())
-   * and logs what the SLAM mode did. Then calls finish(log) on every sink, in order. */
+   * and logs what the SLAM mode did, each step a line with its time (timedStep()). Then calls
+   * finish(log) on every sink, in order. */
   void finish(std::ostream& log);
   /** Resets the odometry and every sink: the next frame is the new origin. */
   void reset();

@@ -33,7 +33,7 @@ class TrajectorySink : public FrameSink {
   /** Throws std::runtime_error naming the file when the line cannot be written. */
   void add(const mrpt::obs::CObservation3DRangeScan& obs, const FrameResult& r) override;
   /** Writes the poses not yet written, moves the file into place (throws naming it if a write
-   * failed) and logs "trajectory: <path>". */
+   * failed) and logs "trajectory: <path> ... <time>" (timedStep()). */
   void finish(std::ostream& log) override;
   /** Drops the poses kept in memory; lines already written stay in the file. */
   void reset() override;
@@ -62,7 +62,8 @@ class CsvSink : public FrameSink {
   explicit CsvSink(const std::string& path);
   /** Throws std::runtime_error naming the file when the row cannot be written. */
   void add(const mrpt::obs::CObservation3DRangeScan& obs, const FrameResult& r) override;
-  /** Moves the file into place (throws naming it if a write failed) and logs "CSV: <path>". */
+  /** Moves the file into place (throws naming it if a write failed) and logs "CSV: <path> ...
+   * <time>" (timedStep()). */
   void finish(std::ostream& log) override;
 
  private:
@@ -78,7 +79,8 @@ class ProgressSink : public FrameSink {
   ProgressSink(std::ostream& out, const ProgressParams& params, Progress::Clock clock = {})
       : m_progress(out, params, std::move(clock)) {}
   void add(const mrpt::obs::CObservation3DRangeScan& obs, const FrameResult& r) override;
-  /** Writes the final line on its own stream; `log` is not used. */
+  /** Writes the final line on its own stream; `log` is not used. Once: later calls do nothing
+   * (the playback ends the line before the final steps, FrameLoop::finish() calls it again). */
   void finish(std::ostream& log) override;
 
  private:

@@ -94,6 +94,9 @@ struct BenchmarkReport {
   std::vector<BenchFigure> figures;  //!< one per real sequence that ran
   std::string config_file, machine, date;
   double seconds = 0;  //!< wall time of the whole benchmark
+  /** Not empty: an interrupt stopped the benchmark; what ran ("interrupted (SIGINT) after 7 of
+   * 252 runs"). The report then holds the runs finished, and no figures. */
+  std::string partial;
 };
 
 /** Renders missing simulated sequences into the cache and resolves the real ones; `extra` are
@@ -102,12 +105,22 @@ std::vector<BenchSequence> prepareSequences(const BenchmarkParams& params,
                                             const std::vector<std::string>& extra,
                                             std::ostream& log);
 
+/** The quick preset (`rgbd-benchmark --quick`), as [Benchmark] keys over the file's: `hybrid`
+ * and `opencv_rgbd` on every scene near only, swept, and every real sequence, at most 60 frames
+ * a run, into `benchmark_quick` (the full results stay as they are). */
+std::map<std::string, std::string> quickBenchmark();
+
 /** Loads [Benchmark] from `config_file` (paths relative to it), prepares the sequences and runs
  * every method on each with runPlayback(), on one thread. Runs that throw are recorded. Each real
  * sequence gets a figure of all methods against its ground truth (plotEvaluations()) in
- * <output_folder>/plots/; one that cannot be drawn is recorded in the report. `progress`: each
- * run shows its progress on stderr (rgbd_core/Progress.h), labelled "<sequence> <method>".
- * `overrides`: [Benchmark] keys set over the file's (the command line's), checked alike. */
+ * <output_folder>/plots/; one that cannot be drawn is recorded in the report. `log` gets a line
+ * per run as it ends ("run 7 of 252: ...; 12 min left"). `progress`: each run shows its progress
+ * on stderr (rgbd_core/Progress.h), labelled "run <n>/<count> <sequence> <method>".
+ * `overrides`: [Benchmark] keys set over the file's (the command line's), checked alike.
+ * Results: <output_folder>/results.md and results.csv. An interrupt (Ctrl-C, SIGTERM:
+ * rgbd_core/Interrupt.h) stops the benchmark at the next frame; the runs finished so far are
+ * then written to results_partial.md and results_partial.csv, marked partial, and the Interrupted
+ * propagates. A benchmark that finishes removes the partial results of an earlier one. */
 BenchmarkReport runBenchmark(const std::string& config_file, const std::vector<std::string>& extra,
                              std::ostream& log, bool progress = true,
                              const std::map<std::string, std::string>& overrides = {});

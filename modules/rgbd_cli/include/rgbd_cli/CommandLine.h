@@ -43,7 +43,8 @@ class CommandLine : public TCLAP::CmdLine {
   /** Parses `argv` and runs `work` only after a clean parse; returns the ExitCode. Besides
    * TCLAP's own errors, refuses an unknown `-x` / `--xyz` where a positional argument may stand
    * (TCLAP would take it as the positional value; "--" lets such a name through) and an empty
-   * value for a number (TCLAP would keep the default). Call it once: TCLAP parses once. */
+   * value for a number (TCLAP would keep the default). stdout is made line-buffered first, so
+   * a pipe or log file gets each line as it is written. Call it once: TCLAP parses once. */
   int run(int argc, const char* const* argv, const std::function<void()>& work);
 
   /** Constraints for ValueArg / UnlabeledValueArg; this object owns them. `type` is the value's

@@ -2,10 +2,13 @@
 /** \file Progress.h
  * One progress line for long loops (playback, benchmark, simulator, converter): items done, of
  * the total when known, rate and time left. On a terminal the line is redrawn in place; in a
- * file or pipe a whole line is written now and then, so logs show the progress too. */
+ * file or pipe a whole line is written now and then, so logs show the progress too. Also: the
+ * progress of work in stages (StagedProgress) and the timed steps that follow a loop
+ * (timedStep(): final optimisation, map, outputs). */
 #include <cstddef>
 #include <functional>
 #include <iosfwd>
+#include <memory>
 #include <string>
 
 namespace hrgbd {
@@ -21,6 +24,9 @@ struct ProgressParams {
   double log_period = 10;       //!< [s] not a terminal: a line after this long ...
   double log_fraction = 0.1;    //!< ... or after this share of the total, whichever comes first,
   double log_min_gap = 1;       //!< [s] ... but not sooner than this after the last line
+  /** What follows the last item ("final steps"): the time left is then that of the items only,
+   * and the line says so ("12 s left + final steps"); "" = nothing follows. */
+  std::string after;
 };
 
 /** The progress of one loop. The clock is injected (tests); by default steady_clock. */
@@ -50,6 +56,33 @@ class Progress {
   std::size_t m_drawn_width = 0;  //!< terminal: length of the line on screen
   bool m_finished = false;
 };
+
+/** Work in stages, one progress line each ("seeding: 400/1000 words ..."): a stage's line is
+ * finished when the next stage begins, and by finish(). */
+class StagedProgress {
+ public:
+  /** `terminal` as ProgressParams::terminal; `clock` as Progress's. */
+  StagedProgress(std::ostream& out, bool terminal, Progress::Clock clock = {});
+  /** `done` of `total` `unit` in stage `stage`; a new stage finishes the line of the last. */
+  void update(const std::string& stage, const std::string& unit, std::size_t done,
+              std::size_t total);
+  /** Finishes the line of the current stage, if any. */
+  void finish();
+
+ private:
+  std::ostream& m_out;
+  bool m_terminal;
+  Progress::Clock m_clock;
+  std::string m_stage;
+  std::unique_ptr<Progress> m_progress;
+};
+
+/** One step after a loop (final optimisation, writing an output): writes `what` and " ... "
+ * (flushed, so the line shows while the step runs), runs `step`, then ends the line with the
+ * step's time ("map (PLY, 120 points): map.ply ... 1.2 s"). When `step` throws, the line ends
+ * with "failed" and the exception propagates. `clock` as Progress's. */
+void timedStep(std::ostream& out, const std::string& what, const std::function<void()>& step,
+               const Progress::Clock& clock = {});
 
 /** "4.4 s" (below 10 s), "12 s", "2 min 05 s", "1 h 02 min". */
 std::string formatDuration(double seconds);

@@ -7,6 +7,7 @@
  * members), tf-idf weighted word histograms, and DBoW2's L1 score. Word look-up is OpenCV's
  * brute-force Hamming search (cv::batchDistance). */
 #include <cstdint>
+#include <functional>
 #include <opencv2/core.hpp>
 #include <string>
 #include <utility>
@@ -30,6 +31,11 @@ struct VocabularyTraining {
   int words = 1000;     //!< [count] clusters
   int iterations = 15;  //!< [count] k-majority rounds (fewer if the assignment settles)
   unsigned seed = 1;
+  /** Called as the training goes (may be empty): the stage ("seeding", "k-majority"), the unit
+   * counted ("words", "rounds"), done and total. It may throw (an interrupt) to stop it. */
+  std::function<void(const std::string& stage, const std::string& unit, std::size_t done,
+                     std::size_t total)>
+      progress;
 };
 
 class Vocabulary {
